@@ -1,0 +1,11 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace roadscale::cli {
+
+// Each subcommand lives in its own file and adds itself to the application through one of
+// these functions. A subcommand's callback throws roadscale::Error on bad input; main()
+// turns it into one line on stderr and a non-zero exit code.
+
+}  // namespace roadscale::cli

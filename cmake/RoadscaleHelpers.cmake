@@ -1,0 +1,21 @@
+# Compiler flags shared by every roadscale target.
+function(roadscale_set_compile_options target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(ROADSCALE_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                             -fno-sanitize-recover=undefined)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+# roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data])
+# One GoogleTest executable per module; each TEST becomes its own CTest case.
+function(roadscale_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE roadscale roadscale_testing GTest::gtest GTest::gtest_main)
+  roadscale_set_compile_options(${name})
+  gtest_discover_tests(${name}
+    PROPERTIES LABELS "${ARG_LABELS}"
+    DISCOVERY_TIMEOUT 60)
+endfunction()

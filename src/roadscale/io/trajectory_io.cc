@@ -1,0 +1,126 @@
+#include "roadscale/io/trajectory_io.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "roadscale/util/error.h"
+#include "roadscale/util/text_parsing.h"
+
+namespace roadscale {
+namespace {
+
+std::ifstream OpenForReading(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) ThrowFileError(path, "cannot open trajectory file");
+  return file;
+}
+
+std::string FormatNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", value);
+  return buffer;
+}
+
+template <typename RowFormatter>
+void WriteRows(const std::string& path, size_t count, RowFormatter format_row) {
+  std::ofstream file(path);
+  if (!file) ThrowFileError(path, "cannot open for writing");
+  for (size_t i = 0; i < count; ++i) file << format_row(i) << '\n';
+  file.flush();
+  if (!file) ThrowFileError(path, "write failed");
+}
+
+}  // namespace
+
+TrajectoryFormat ParseTrajectoryFormat(const std::string& name) {
+  if (name == "kitti") return TrajectoryFormat::kKitti;
+  if (name == "tum") return TrajectoryFormat::kTum;
+  throw Error("unknown trajectory format '" + name + "' (expected kitti or tum)");
+}
+
+Trajectory ReadKittiTrajectory(const std::string& path) {
+  std::ifstream file = OpenForReading(path);
+  Trajectory trajectory;
+  std::string line;
+  for (int line_number = 1; std::getline(file, line); ++line_number) {
+    if (IsBlankOrComment(line)) continue;
+    const std::vector<double> v = ParseNumbers(line, path, line_number);
+    if (v.size() != 12) {
+      ThrowFileError(
+          path, line_number,
+          "expected 12 numbers (a row-major 3x4 pose), found " + std::to_string(v.size()));
+    }
+    Rigid3d pose = Rigid3d::Identity();
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 4; ++c) pose.matrix()(r, c) = v[4 * r + c];
+    }
+    trajectory.world_from_cam.push_back(pose);
+  }
+  return trajectory;
+}
+
+Trajectory ReadTumTrajectory(const std::string& path) {
+  std::ifstream file = OpenForReading(path);
+  Trajectory trajectory;
+  std::string line;
+  for (int line_number = 1; std::getline(file, line); ++line_number) {
+    if (IsBlankOrComment(line)) continue;
+    const std::vector<double> v = ParseNumbers(line, path, line_number);
+    if (v.size() != 8) {
+      ThrowFileError(
+          path, line_number,
+          "expected 8 numbers (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size()));
+    }
+    const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
+    if (q.norm() < 1e-6) ThrowFileError(path, line_number, "quaternion has zero length");
+    if (trajectory.HasTimestamps() && v[0] <= trajectory.timestamps.back()) {
+      ThrowFileError(path, line_number, "timestamps must increase");
+    }
+    trajectory.timestamps.push_back(v[0]);
+    trajectory.world_from_cam.push_back(
+        MakeRigid3d(q.normalized().toRotationMatrix(), Eigen::Vector3d(v[1], v[2], v[3])));
+  }
+  return trajectory;
+}
+
+Trajectory ReadTrajectory(const std::string& path, TrajectoryFormat format) {
+  return format == TrajectoryFormat::kKitti ? ReadKittiTrajectory(path) : ReadTumTrajectory(path);
+}
+
+std::string FormatKittiRow(const Rigid3d& world_from_cam) {
+  std::string row;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      if (!row.empty()) row += ' ';
+      row += FormatNumber(world_from_cam.matrix()(r, c));
+    }
+  }
+  return row;
+}
+
+std::string FormatTumRow(double timestamp, const Rigid3d& world_from_cam) {
+  const Eigen::Quaterniond q(world_from_cam.rotation());
+  const Eigen::Vector3d& t = world_from_cam.translation();
+  std::string row = FormatNumber(timestamp);
+  for (double value : {t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w()}) {
+    row += ' ';
+    row += FormatNumber(value);
+  }
+  return row;
+}
+
+void WriteKittiTrajectory(const std::string& path, const Trajectory& trajectory) {
+  WriteRows(path, trajectory.size(),
+            [&](size_t i) { return FormatKittiRow(trajectory.world_from_cam[i]); });
+}
+
+void WriteTumTrajectory(const std::string& path, const Trajectory& trajectory) {
+  if (trajectory.timestamps.size() != trajectory.size()) {
+    ThrowFileError(path, "a TUM trajectory needs one timestamp per pose");
+  }
+  WriteRows(path, trajectory.size(), [&](size_t i) {
+    return FormatTumRow(trajectory.timestamps[i], trajectory.world_from_cam[i]);
+  });
+}
+
+}  // namespace roadscale

@@ -1,0 +1,90 @@
+#include "roadscale/io/trajectory_io.h"
+
+#include <gtest/gtest.h>
+
+#include "roadscale/testing/shared_data.h"
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+using testing::TempDir;
+using testing::WriteTextFile;
+
+Trajectory ExampleTrajectory() {
+  Trajectory trajectory;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Matrix3d rotation =
+        Eigen::AngleAxisd(0.1 * i + 1e-13, Eigen::Vector3d(0.2, 1.0, 0.1).normalized())
+            .toRotationMatrix();
+    trajectory.world_from_cam.push_back(
+        MakeRigid3d(rotation, Eigen::Vector3d(0.1 * i, -0.02 * i, 1.0 / 3.0 * i)));
+    trajectory.timestamps.push_back(0.1037359 * i);
+  }
+  return trajectory;
+}
+
+TEST(TrajectoryIo, KittiRoundTripIsExact) {
+  TempDir dir;
+  const Trajectory written = ExampleTrajectory();
+  WriteKittiTrajectory(dir.File("poses.txt"), written);
+  const Trajectory read = ReadKittiTrajectory(dir.File("poses.txt"));
+  ASSERT_EQ(read.size(), written.size());
+  EXPECT_FALSE(read.HasTimestamps());
+  for (size_t i = 0; i < read.size(); ++i) {
+    EXPECT_EQ(read.world_from_cam[i].matrix(), written.world_from_cam[i].matrix()) << i;
+  }
+}
+
+TEST(TrajectoryIo, TumRoundTripKeepsTimestampsAndPoses) {
+  TempDir dir;
+  const Trajectory written = ExampleTrajectory();
+  WriteTumTrajectory(dir.File("poses_tum.txt"), written);
+  const Trajectory read = ReadTumTrajectory(dir.File("poses_tum.txt"));
+  ASSERT_EQ(read.size(), written.size());
+  for (size_t i = 0; i < read.size(); ++i) {
+    EXPECT_EQ(read.timestamps[i], written.timestamps[i]);
+    EXPECT_TRUE(read.world_from_cam[i].isApprox(written.world_from_cam[i], 1e-15)) << i;
+  }
+}
+
+TEST(TrajectoryIo, ToleratesCommentsAndBlankLines) {
+  TempDir dir;
+  const std::string path = WriteTextFile(dir.File("t.txt"),
+                                         "# header\n\n1 0 0 0 0 1 0 0 0 0 1 0\n   \n"
+                                         "1 0 0 1 0 1 0 2 0 0 1 3\n");
+  const Trajectory read = ReadKittiTrajectory(path);
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read.world_from_cam[1].translation(), Eigen::Vector3d(1, 2, 3));
+}
+
+TEST(TrajectoryIo, MalformedRowsNameFileAndLine) {
+  TempDir dir;
+  const std::string short_row =
+      WriteTextFile(dir.File("short.txt"), "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n");
+  try {
+    ReadKittiTrajectory(short_row);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              short_row + ":2: expected 12 numbers (a row-major 3x4 pose), found 11");
+  }
+  const std::string bad_tum = WriteTextFile(dir.File("bad.tum"), "0.0 1 2 3 0 0 0 1\n0.1 1 2 x\n");
+  EXPECT_THROW(ReadTumTrajectory(bad_tum), Error);
+  const std::string backwards =
+      WriteTextFile(dir.File("back.tum"), "0.2 1 2 3 0 0 0 1\n0.1 1 2 3 0 0 0 1\n");
+  EXPECT_THROW(ReadTumTrajectory(backwards), Error);
+  EXPECT_THROW(ReadKittiTrajectory(dir.File("does_not_exist.txt")), Error);
+}
+
+TEST(TrajectoryIo, ReadsSharedKittiGroundTruth) {
+  ROADSCALE_REQUIRE_SHARED("kitti/poses/00.txt");
+  const Trajectory gt = ReadKittiTrajectory(testing::SharedPath("kitti/poses/00.txt").string());
+  ASSERT_EQ(gt.size(), 4541u);
+  EXPECT_TRUE(gt.world_from_cam[0].matrix().isApprox(Eigen::Matrix4d::Identity(), 1e-6))
+      << "KITTI writes frame 0 as the identity with 7 digits";
+}
+
+}  // namespace
+}  // namespace roadscale

@@ -1,0 +1,45 @@
+#include "roadscale/util/text_parsing.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+}  // namespace
+
+bool IsBlankOrComment(std::string_view line) {
+  for (char c : line) {
+    if (c == '#') return true;
+    if (!IsSpace(c)) return false;
+  }
+  return true;
+}
+
+std::vector<double> ParseNumbers(std::string_view text, const std::string& path, int line_number) {
+  std::vector<double> numbers;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    while (pos < text.size() && IsSpace(text[pos])) ++pos;
+    if (pos == text.size()) break;
+    size_t end = pos;
+    while (end < text.size() && !IsSpace(text[end])) ++end;
+    const std::string token(text.substr(pos, end - pos));
+    char* parsed_end = nullptr;
+    errno = 0;
+    const double value = std::strtod(token.c_str(), &parsed_end);
+    if (parsed_end != token.c_str() + token.size() || errno == ERANGE || !std::isfinite(value)) {
+      ThrowFileError(path, line_number, "expected a number, found '" + token + "'");
+    }
+    numbers.push_back(value);
+    pos = end;
+  }
+  return numbers;
+}
+
+}  // namespace roadscale

@@ -1,0 +1,38 @@
+#include "roadscale/util/text_parsing.h"
+
+#include <gtest/gtest.h>
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+TEST(TextParsing, ParsesNumbersWithExponentsAndTabs) {
+  const auto numbers = ParseNumbers("1.5\t-2e-3  7 ", "f.txt", 3);
+  ASSERT_EQ(numbers.size(), 3u);
+  EXPECT_DOUBLE_EQ(numbers[0], 1.5);
+  EXPECT_DOUBLE_EQ(numbers[1], -2e-3);
+  EXPECT_DOUBLE_EQ(numbers[2], 7.0);
+}
+
+TEST(TextParsing, RejectsGarbageNamingFileAndLine) {
+  try {
+    ParseNumbers("1.0 abc", "poses.txt", 12);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "poses.txt:12: expected a number, found 'abc'");
+  }
+  EXPECT_THROW(ParseNumbers("nan", "f", 1), Error);
+  EXPECT_THROW(ParseNumbers("1e999", "f", 1), Error);
+  EXPECT_THROW(ParseNumbers("2.5x", "f", 1), Error);
+}
+
+TEST(TextParsing, BlankAndCommentLines) {
+  EXPECT_TRUE(IsBlankOrComment(""));
+  EXPECT_TRUE(IsBlankOrComment("  \t\r"));
+  EXPECT_TRUE(IsBlankOrComment("  # a comment"));
+  EXPECT_FALSE(IsBlankOrComment(" 1 2 # trailing"));
+}
+
+}  // namespace
+}  // namespace roadscale
