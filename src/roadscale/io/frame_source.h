@@ -69,8 +69,8 @@ struct FrameSourceOptions {
   // folder or a video; for a KITTI sequence the intrinsics come from calib.txt and this
   // file, when given, is not read.
   std::string camera_yaml;
-  // KITTI camera: 0 (image_0, grey left, P0) or 2 (image_2, colour left, P2); -1 picks
-  // image_0 when the sequence has it, else image_2.
+  // KITTI camera N in 0..3 reads image_N/ with the intrinsics of P_N (0 grey left, 2 colour
+  // left); -1 picks image_0 when the sequence has it, else image_2.
   int kitti_camera = -1;
   // Deliver BGR images instead of grey (a grey input is then repeated over 3 channels).
   bool color = false;
@@ -227,6 +227,7 @@ class VideoFile : public FrameSource {
   FrameRange range_;
   size_t size_ = 0;
   size_t next_index_ = 0;  // index of the frame the next grab() returns
+  double last_timestamp_ = 0.0;
   double fps_ = kDefaultFrameRateHz;
   bool color_ = false;
   std::vector<std::string> notes_;

@@ -46,7 +46,7 @@ inline constexpr double kKittiStereoBaseline = 0.54;
 void WriteKittiCalib(const std::string& path, const PinholeCamera& camera);
 
 // Reads a KITTI times.txt: one timestamp in seconds a line, strictly increasing. Blank
-// lines are tolerated; anything else throws Error naming the file and line.
+// lines and '#' comments are tolerated; anything else throws Error naming the file and line.
 std::vector<double> ReadKittiTimes(const std::string& path);
 
 }  // namespace roadscale

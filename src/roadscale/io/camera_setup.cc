@@ -1,0 +1,133 @@
+#include "roadscale/io/camera_setup.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+
+#include <yaml-cpp/yaml.h>
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+// yaml-cpp counts lines from 0 and marks "no position" with -1; ThrowFileError wants 1-based
+// lines and 0 for none.
+int LineOf(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
+
+YAML::Node RequireKey(const YAML::Node& block, const char* key, const std::string& path) {
+  const YAML::Node node = block[key];
+  if (!node) {
+    ThrowFileError(path, LineOf(block.Mark()),
+                   std::string("Camera: missing key '") + key + "' (expected " +
+                       "fx, fy, cx, cy, width, height, h0)");
+  }
+  if (!node.IsScalar()) {
+    ThrowFileError(path, LineOf(node.Mark()), std::string("Camera.") + key + ": expected a number");
+  }
+  return node;
+}
+
+double ReadDouble(const YAML::Node& block, const char* key, const std::string& path) {
+  const YAML::Node node = RequireKey(block, key, path);
+  const std::string& text = node.Scalar();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
+      !std::isfinite(value)) {
+    ThrowFileError(path, LineOf(node.Mark()),
+                   std::string("Camera.") + key + ": expected a number, found '" + text + "'");
+  }
+  return value;
+}
+
+int ReadInt(const YAML::Node& block, const char* key, const std::string& path) {
+  const YAML::Node node = RequireKey(block, key, path);
+  const std::string& text = node.Scalar();
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    ThrowFileError(path, LineOf(node.Mark()),
+                   std::string("Camera.") + key + ": expected an integer, found '" + text + "'");
+  }
+  return value;
+}
+
+// The shortest text that reads back as the same double.
+std::string ShortestRoundTrip(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return std::string(buffer, result.ptr);
+}
+
+}  // namespace
+
+void CameraSetup::Check() const {
+  camera.Check();
+  CheckOption(camera.cx >= 0.0 && camera.cx <= camera.width && camera.cy >= 0.0 &&
+                  camera.cy <= camera.height,
+              "camera.cx/cy", "the principal point must lie inside the image");
+  CheckOption(std::isfinite(h0) && h0 > 0.0, "camera.h0",
+              "the camera height above the road must be a positive number of metres");
+}
+
+CameraSetup ReadCameraYaml(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    ThrowFileError(path, "cannot open camera YAML file");
+  } catch (const YAML::Exception& e) {
+    ThrowFileError(path, LineOf(e.mark), "invalid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) ThrowFileError(path, "expected a YAML map with a top-level 'Camera:' block");
+  const YAML::Node block = root["Camera"];
+  if (!block) ThrowFileError(path, "missing the top-level 'Camera:' block");
+  if (!block.IsMap()) {
+    ThrowFileError(path, LineOf(block.Mark()),
+                   "'Camera:' must be a block of keys (fx, fy, cx, cy, width, height, h0)");
+  }
+
+  CameraSetup setup;
+  setup.camera.fx = ReadDouble(block, "fx", path);
+  setup.camera.fy = ReadDouble(block, "fy", path);
+  setup.camera.cx = ReadDouble(block, "cx", path);
+  setup.camera.cy = ReadDouble(block, "cy", path);
+  setup.camera.width = ReadInt(block, "width", path);
+  setup.camera.height = ReadInt(block, "height", path);
+  setup.h0 = ReadDouble(block, "h0", path);
+  try {
+    setup.Check();
+  } catch (const Error& e) {
+    ThrowFileError(path, LineOf(block.Mark()), std::string("Camera: ") + e.what());
+  }
+  return setup;
+}
+
+void WriteCameraYaml(const std::string& path, const CameraSetup& setup) {
+  try {
+    setup.Check();
+  } catch (const Error& e) {
+    ThrowFileError(path, std::string("refusing to write an invalid camera: ") + e.what());
+  }
+  std::ofstream file(path);
+  if (!file) ThrowFileError(path, "cannot open for writing");
+  const PinholeCamera& c = setup.camera;
+  file << "# Pinhole camera (undistorted image), pixels; h0: camera height above the road, m.\n"
+       << "Camera:\n"
+       << "  fx: " << ShortestRoundTrip(c.fx) << '\n'
+       << "  fy: " << ShortestRoundTrip(c.fy) << '\n'
+       << "  cx: " << ShortestRoundTrip(c.cx) << '\n'
+       << "  cy: " << ShortestRoundTrip(c.cy) << '\n'
+       << "  width: " << c.width << '\n'
+       << "  height: " << c.height << '\n'
+       << "  h0: " << ShortestRoundTrip(setup.h0) << '\n';
+  file.flush();
+  if (!file) ThrowFileError(path, "write failed");
+}
+
+}  // namespace roadscale

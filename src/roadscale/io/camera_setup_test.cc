@@ -1,0 +1,162 @@
+#include "roadscale/io/camera_setup.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::TempDir;
+using testing::WriteTextFile;
+
+// The message of the Error `read` throws; fails the test when it throws nothing.
+template <typename Function>
+std::string ErrorOf(Function read) {
+  try {
+    read();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an Error";
+  return "";
+}
+
+CameraSetup ExampleSetup() {
+  CameraSetup setup;
+  setup.camera = KittiOdometryCamera();
+  setup.h0 = 1.65;
+  return setup;
+}
+
+TEST(CameraSetup, WriteThenReadGivesTheSameDoubles) {
+  TempDir dir;
+  CameraSetup written = ExampleSetup();
+  written.camera.fx = 1.0 / 3.0 * 2000.0;  // needs all 17 digits
+  written.h0 = 1.7321;
+  WriteCameraYaml(dir.File("camera.yaml"), written);
+  const CameraSetup read = ReadCameraYaml(dir.File("camera.yaml"));
+  EXPECT_EQ(read.camera.fx, written.camera.fx);
+  EXPECT_EQ(read.camera.fy, written.camera.fy);
+  EXPECT_EQ(read.camera.cx, written.camera.cx);
+  EXPECT_EQ(read.camera.cy, written.camera.cy);
+  EXPECT_EQ(read.camera.width, 1241);
+  EXPECT_EQ(read.camera.height, 376);
+  EXPECT_EQ(read.h0, 1.7321);
+}
+
+TEST(CameraSetup, ReadsTheCameraBlockOfAProjectConfigAndIgnoresTheRest) {
+  TempDir dir;
+  const std::string path = WriteTextFile(dir.File("config.yaml"),
+                                         "# a project config\n"
+                                         "Frontend:\n"
+                                         "  detector: sift\n"
+                                         "  max_features: [1, 2]\n"
+                                         "Camera:\n"
+                                         "  name: KITTI 00-02 left grey\n"
+                                         "  fx: 718.856\n"
+                                         "  fy: 7.18856e+02\n"
+                                         "  cx: 607.1928\n"
+                                         "  cy: 185.2157\n"
+                                         "  width: 1241\n"
+                                         "  height: 376\n"
+                                         "  h0: 1.65  # metres\n"
+                                         "Scale:\n"
+                                         "  window: 5\n");
+  const CameraSetup setup = ReadCameraYaml(path);
+  EXPECT_EQ(setup.camera.fx, 718.856);
+  EXPECT_EQ(setup.camera.fy, 718.856);
+  EXPECT_EQ(setup.camera.cx, 607.1928);
+  EXPECT_EQ(setup.camera.cy, 185.2157);
+  EXPECT_EQ(setup.h0, 1.65);
+}
+
+TEST(CameraSetup, TheShippedExampleConfigIsValid) {
+  const CameraSetup setup = ReadCameraYaml(ROADSCALE_SOURCE_DIR "/config/camera_example.yaml");
+  EXPECT_EQ(setup.camera.fx, 718.856);
+  EXPECT_EQ(setup.camera.width, 1241);
+  EXPECT_EQ(setup.h0, 1.65);
+}
+
+TEST(CameraSetup, MissingKeyNamesFileLineAndKey) {
+  TempDir dir;
+  const std::string path = WriteTextFile(dir.File("c.yaml"),
+                                         "Other: 1\n"
+                                         "Camera:\n"
+                                         "  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n"
+                                         "  width: 640\n  height: 480\n");
+  const std::string message = ErrorOf([&] { ReadCameraYaml(path); });
+  // The block's mark is where its first key starts.
+  EXPECT_THAT(message, HasSubstr(path + ":3:"));
+  EXPECT_THAT(message, HasSubstr("missing key 'h0'"));
+}
+
+TEST(CameraSetup, InvalidValueNamesItsLine) {
+  TempDir dir;
+  const std::string path = WriteTextFile(dir.File("c.yaml"),
+                                         "Camera:\n  fx: 700\n  fy: 7oo\n  cx: 320\n  cy: 240\n"
+                                         "  width: 640\n  height: 480\n  h0: 1.5\n");
+  const std::string message = ErrorOf([&] { ReadCameraYaml(path); });
+  EXPECT_THAT(message, HasSubstr(path + ":3:"));
+  EXPECT_THAT(message, HasSubstr("Camera.fy: expected a number, found '7oo'"));
+}
+
+TEST(CameraSetup, NonIntegerSizeIsRejected) {
+  TempDir dir;
+  const std::string path = WriteTextFile(dir.File("c.yaml"),
+                                         "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n"
+                                         "  width: 640.5\n  height: 480\n  h0: 1.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(path); }),
+              HasSubstr(path + ":6: Camera.width: expected an integer, found '640.5'"));
+}
+
+TEST(CameraSetup, ImplausibleValuesAreRejectedWithTheFileName) {
+  TempDir dir;
+  const std::string negative_h0 =
+      WriteTextFile(dir.File("h0.yaml"),
+                    "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n"
+                    "  width: 640\n  height: 480\n  h0: -1.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(negative_h0); }),
+              HasSubstr(negative_h0 + ":2: Camera: invalid option camera.h0"));
+  const std::string outside = WriteTextFile(dir.File("pp.yaml"),
+                                            "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 2400\n"
+                                            "  width: 640\n  height: 480\n  h0: 1.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(outside); }), HasSubstr("principal point"));
+}
+
+TEST(CameraSetup, YamlSyntaxErrorCarriesItsLine) {
+  TempDir dir;
+  const std::string path =
+      WriteTextFile(dir.File("c.yaml"), "Camera:\n  fx: 700\n  fy: [700\n  cx: 320\n");
+  const std::string message = ErrorOf([&] { ReadCameraYaml(path); });
+  EXPECT_THAT(message, HasSubstr(path + ":"));
+  EXPECT_THAT(message, HasSubstr("invalid YAML"));
+  EXPECT_THAT(message, ::testing::ContainsRegex(":[0-9]+: invalid YAML"));
+}
+
+TEST(CameraSetup, MissingBlockOrFileIsNamed) {
+  TempDir dir;
+  const std::string no_block = WriteTextFile(dir.File("c.yaml"), "Frontend:\n  a: 1\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(no_block); }),
+              HasSubstr(no_block + ": missing the top-level 'Camera:' block"));
+  const std::string scalar_block = WriteTextFile(dir.File("s.yaml"), "Camera: 5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(scalar_block); }),
+              HasSubstr("'Camera:' must be a block"));
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(dir.File("absent.yaml")); }),
+              HasSubstr(dir.File("absent.yaml") + ": cannot open camera YAML file"));
+}
+
+TEST(CameraSetup, WriterRefusesAnInvalidCameraAndAnUnwritablePath) {
+  TempDir dir;
+  CameraSetup bad = ExampleSetup();
+  bad.h0 = 0.0;
+  EXPECT_THROW(WriteCameraYaml(dir.File("c.yaml"), bad), Error);
+  EXPECT_THAT(ErrorOf([&] { WriteCameraYaml(dir.File("no/such/dir/c.yaml"), ExampleSetup()); }),
+              HasSubstr("cannot open for writing"));
+}
+
+}  // namespace
+}  // namespace roadscale
