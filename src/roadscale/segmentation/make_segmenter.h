@@ -1,0 +1,28 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "roadscale/segmentation/segmentation_masks.h"
+#include "roadscale/segmentation/segmenter.h"
+
+namespace roadscale {
+
+struct SegmentationOptions {
+  // A segmentation model YAML (see segmentation_model.h), or "none" for no segmentation.
+  std::string model = "none";
+  // Segment every k-th frame and reuse the masks in between; 1 (the paper: every frame).
+  int every = 1;
+  // Threads OpenCV DNN uses for a network; 2.
+  int dnn_threads = 2;
+  MaskOptions masks;
+
+  void Check() const;
+};
+
+// The segmenter `options.model` describes, wrapped to run every k-th frame when every > 1.
+// Every check that can fail on a model (file, YAML keys, loading the network, its output
+// shape) runs here, before any frame is processed; throws Error naming the file.
+std::unique_ptr<Segmenter> MakeSegmenter(const SegmentationOptions& options);
+
+}  // namespace roadscale
