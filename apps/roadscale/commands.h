@@ -8,4 +8,10 @@ namespace roadscale::cli {
 // these functions. A subcommand's callback throws roadscale::Error on bad input; main()
 // turns it into one line on stderr and a non-zero exit code.
 
+// `roadscale segment`: label images and overlays from a segmentation model.
+void RegisterSegmentCommand(CLI::App& app);
+
+// `roadscale synth`: synthetic driving sequences with exact ground truth.
+void RegisterSynthCommand(CLI::App& app);
+
 }  // namespace roadscale::cli
