@@ -132,6 +132,7 @@ class ImageFileSequence : public FrameSource {
 
   // The frame at `position` (0 .. size()-1) of the selected range, whatever Next() has
   // delivered. Throws Error when `position` is out of range or the image is unreadable.
+  // Read() changes nothing, so several threads may call it at once (prefetching).
   Frame Read(size_t position) const;
 
   // Paths of the selected frames' images, in order.
@@ -189,7 +190,8 @@ class KittiSequence : public ImageFileSequence {
 // (without extension) is a number, the numbers must be consecutive: a gap means a dropped
 // frame, and the error names the first missing file. Timestamps come from the folder's
 // times.txt when it exists (same rules as KITTI: at least one row per image), else
-// index / kDefaultFrameRateHz (a note says so).
+// index / kDefaultFrameRateHz (a note says so). Frame::index is the position in this order
+// (0 for the first image, whatever its name).
 class ImageFolder : public ImageFileSequence {
  public:
   // Uses options.input (the folder), camera_yaml (required), color, h0 and frames. Throws
