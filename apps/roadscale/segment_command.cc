@@ -48,7 +48,7 @@ void RunSegment(const SegmentArguments& arguments) {
   if (arguments.segmentation.model == "none") {
     throw Error(
         "--model none has no labels to write; give a model YAML such as "
-        "config/models/espnetv2_1024x320.yaml");
+        "config/models/espnetv2_512x256.yaml");
   }
   CheckOption(arguments.overlay_weight >= 0.0 && arguments.overlay_weight <= 1.0,
               "--overlay-weight", "must be in 0..1");
@@ -147,7 +147,7 @@ void RegisterSegmentCommand(CLI::App& app) {
       ->capture_default_str();
   command
       ->add_option("--model", arguments->segmentation.model,
-                   "segmentation model YAML, e.g. config/models/espnetv2_1024x320.yaml "
+                   "segmentation model YAML, e.g. config/models/espnetv2_512x256.yaml "
                    "(see src/roadscale/segmentation/segmentation_model.h)")
       ->required();
   command->add_option("--out", arguments->out, "output folder (created)")->required();

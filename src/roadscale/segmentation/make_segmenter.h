@@ -8,6 +8,11 @@
 
 namespace roadscale {
 
+// The default network, relative to the project's source folder: ESPNetv2 at 512x256 gives the
+// grey KITTI frames a road mask as good as the larger inputs at less than half their time
+// (docs/benchmarks.md, "Segmentation").
+inline constexpr char kDefaultSegmentationModel[] = "config/models/espnetv2_512x256.yaml";
+
 struct SegmentationOptions {
   // A segmentation model YAML (see segmentation_model.h), or "none" for no segmentation.
   std::string model = "none";

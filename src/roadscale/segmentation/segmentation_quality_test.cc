@@ -11,6 +11,7 @@
 #include "roadscale/segmentation/cityscapes.h"
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/label_iou.h"
+#include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/segmentation/onnx_segmenter.h"
 #include "roadscale/testing/shared_data.h"
 #include "roadscale/testing/temp_dir.h"
@@ -100,7 +101,10 @@ INSTANTIATE_TEST_SUITE_P(EspNetV2Sizes, SegmentationQualityTest,
 TEST(SegmentationQuality, RoadCoversTheLowerCentreOfGreyKitti00Frames) {
   ROADSCALE_REQUIRE_SHARED("kitti/sequences/00/image_0/000199.png");
   ROADSCALE_REQUIRE_SHARED("models/espnetv2");
-  OnnxSegmenter network(ReadSegmentationModel(ModelYaml("640x192")), OnnxSegmenter::Options());
+  // The default network, as the pipeline runs it.
+  OnnxSegmenter network(
+      ReadSegmentationModel(std::string(ROADSCALE_SOURCE_DIR) + "/" + kDefaultSegmentationModel),
+      OnnxSegmenter::Options());
   for (const char* frame : {"000000", "000050", "000100", "000150", "000199"}) {
     const cv::Mat image =
         cv::imread(SharedPath(std::string("kitti/sequences/00/image_0/") + frame + ".png").string(),
