@@ -161,6 +161,37 @@ CameraSetup ReadCameraForInput(const FrameSourceOptions& options, const std::str
   return setup;
 }
 
+bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
+  auto close = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::abs(y); };
+  return close(a.fx, b.fx) && close(a.fy, b.fy) && close(a.cx, b.cx) && close(a.cy, b.cy) &&
+         a.width == b.width && a.height == b.height;
+}
+
+// calib.txt has no camera height; see the KittiSequence comment for the order of the sources.
+double KittiCameraHeight(const FrameSourceOptions& options, const fs::path& sequence_dir,
+                         const PinholeCamera& calib_camera, std::vector<std::string>* notes) {
+  std::string yaml_path = options.camera_yaml;
+  if (yaml_path.empty() && fs::exists(sequence_dir / "camera.yaml")) {
+    yaml_path = (sequence_dir / "camera.yaml").string();
+  }
+  std::optional<CameraSetup> yaml;
+  if (!yaml_path.empty()) {
+    yaml = ReadCameraYaml(yaml_path);
+    if (!SameIntrinsics(yaml->camera, calib_camera)) {
+      notes->push_back(yaml_path + " has other intrinsics than calib.txt: using calib.txt's, and " +
+                       "only the camera height from " + yaml_path);
+    }
+  }
+  if (options.h0) return *options.h0;
+  if (yaml) return yaml->h0;
+  const double kitti_h0 = CameraSetup().h0;
+  char text[64];
+  std::snprintf(text, sizeof(text), "%g", kitti_h0);
+  notes->push_back(std::string("no camera height given: using KITTI's documented h0 = ") + text +
+                   " m");
+  return kitti_h0;
+}
+
 std::string DescribeRange(size_t first, size_t count) {
   return "frames " + std::to_string(first) + ":" + std::to_string(first + count);
 }
@@ -298,7 +329,7 @@ KittiSequence::KittiSequence(const FrameSourceOptions& options) {
   const cv::Mat first = LoadImage(FramePath(0), false, 0, 0);
   const std::string calib_path = (dir / "calib.txt").string();
   camera_.camera = ReadKittiCamera(calib_path, kitti_camera_, first.cols, first.rows);
-  camera_.h0 = options.h0.value_or(CameraSetup().h0);
+  camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &notes_);
   camera_.Check();
   color_ = options.color;
 

@@ -66,16 +66,16 @@ struct FrameSourceOptions {
   std::string input;
   FrameSourceType type = FrameSourceType::kAuto;
   // Camera YAML (see ReadCameraYaml; a project config file works). Required for an image
-  // folder or a video; for a KITTI sequence the intrinsics come from calib.txt and this
-  // file, when given, is not read.
+  // folder or a video. For a KITTI sequence the intrinsics come from calib.txt and only this
+  // file's h0 is used (a note says so when its intrinsics differ from calib.txt's).
   std::string camera_yaml;
   // KITTI camera N in 0..3 reads image_N/ with the intrinsics of P_N (0 grey left, 2 colour
   // left); -1 picks image_0 when the sequence has it, else image_2.
   int kitti_camera = -1;
   // Deliver BGR images instead of grey (a grey input is then repeated over 3 channels).
   bool color = false;
-  // Camera height above the road in metres. When set it replaces the camera YAML's h0; for
-  // a KITTI sequence (calib.txt has no height) it defaults to KITTI's 1.65 m.
+  // Camera height above the road in metres. When set it replaces the camera YAML's h0. For a
+  // KITTI sequence (calib.txt has no height) see KittiSequence for where h0 comes from.
   std::optional<double> h0;
   // Which frames to deliver. An end beyond the last frame is clamped (with a note); a begin
   // at or beyond it throws Error.
@@ -155,7 +155,10 @@ class ImageFileSequence : public FrameSource {
 // A KITTI odometry sequence folder `.../sequences/NN`:
 //   image_0/ or image_2/  %06d.png, numbered 000000 upwards without gaps
 //   calib.txt             P0 (image_0) or P2 (image_2) gives the intrinsics; the image size
-//                         comes from the first image, h0 from options (default 1.65 m)
+//                         comes from the first image
+//   camera.yaml           optional (roadscale's synthetic scenes write it): its h0 is used
+// h0 is the first of: options.h0, the h0 of options.camera_yaml, the sequence's camera.yaml,
+// KITTI's documented 1.65 m (with a note, as the scale depends on it).
 //   times.txt             optional; without it timestamps are index / kDefaultFrameRateHz
 //   ../../poses/NN.txt    optional ground truth
 // The images define the sequence. times.txt and the poses may have MORE rows than there are
@@ -164,7 +167,8 @@ class ImageFileSequence : public FrameSource {
 // note says so. FEWER rows than images is an error naming the file.
 class KittiSequence : public ImageFileSequence {
  public:
-  // Uses options.input (the sequence folder), kitti_camera, color, h0 and frames. Throws
+  // Uses options.input (the sequence folder), kitti_camera, color, h0, camera_yaml (for h0
+  // only) and frames. Throws
   // Error naming the file or folder (and line) on a missing folder, no images, a gap in the
   // numbering (naming the first missing file), a malformed calib.txt, times.txt or poses
   // file, or one shorter than the images.

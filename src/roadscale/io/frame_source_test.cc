@@ -158,7 +158,8 @@ TEST(KittiSequence, ReadsFramesInOrderWithCalibTimesAndGroundTruth) {
   EXPECT_EQ(source.camera().camera.width, kWidth);
   EXPECT_EQ(source.camera().camera.height, kHeight);
   EXPECT_EQ(source.camera().h0, 1.65);
-  EXPECT_TRUE(source.notes().empty());
+  ASSERT_EQ(source.notes().size(), 1u);
+  EXPECT_THAT(source.notes()[0], HasSubstr("using KITTI's documented h0 = 1.65 m"));
 
   Frame frame;
   for (size_t i = 0; i < 5; ++i) {
@@ -187,9 +188,9 @@ TEST(KittiSequence, MoreTimesAndPosesThanImagesLoadWithANote) {
   ASSERT_NE(source.ground_truth(), nullptr);
   EXPECT_EQ(source.ground_truth()->size(), 3u);
   const std::vector<std::string> notes = source.notes();
-  ASSERT_EQ(notes.size(), 2u);
-  EXPECT_THAT(notes[0], HasSubstr("times.txt has 10 timestamps for 3 images: using the first 3"));
-  EXPECT_THAT(notes[1], HasSubstr("07.txt has 12 poses for 3 images"));
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_THAT(notes[1], HasSubstr("times.txt has 10 timestamps for 3 images: using the first 3"));
+  EXPECT_THAT(notes[2], HasSubstr("07.txt has 12 poses for 3 images"));
 }
 
 TEST(KittiSequence, FrameRangeSelectsImagesTimesAndPoses) {
@@ -224,8 +225,8 @@ TEST(KittiSequence, RangePastTheEndIsClampedButAStartPastItIsAnError) {
   KittiSequence clamped(options);
   EXPECT_EQ(clamped.size(), 3u);
   EXPECT_EQ(clamped.ground_truth(), nullptr);
-  ASSERT_EQ(clamped.notes().size(), 1u);
-  EXPECT_THAT(clamped.notes()[0], HasSubstr("reading 1:4"));
+  ASSERT_EQ(clamped.notes().size(), 2u);
+  EXPECT_THAT(clamped.notes()[1], HasSubstr("reading 1:4"));
 
   options.frames = ParseFrameRange("4:");
   EXPECT_THAT(ErrorOf([&] { KittiSequence source(options); }), HasSubstr("has only 4 frames"));
@@ -256,8 +257,39 @@ TEST(KittiSequence, WithoutTimesAssumesTenHertzWithANote) {
   source.Next(&frame);
   source.Next(&frame);
   EXPECT_DOUBLE_EQ(frame.timestamp, 0.1);
-  ASSERT_EQ(source.notes().size(), 1u);
-  EXPECT_THAT(source.notes()[0], HasSubstr("assuming 10 Hz"));
+  ASSERT_EQ(source.notes().size(), 2u);
+  EXPECT_THAT(source.notes()[1], HasSubstr("assuming 10 Hz"));
+}
+
+TEST(KittiSequence, CameraHeightComesFromOptionsThenYamlThenSequenceThenKitti) {
+  TempDir root;
+  const std::string sequence = MakeKittiSequence(root, 2, 2, 0);
+  CameraSetup in_sequence;
+  in_sequence.camera = SmallCamera();
+  in_sequence.h0 = 1.3;
+  WriteCameraYaml((fs::path(sequence) / "camera.yaml").string(), in_sequence);
+  FrameSourceOptions options = OptionsFor(sequence);
+  {
+    KittiSequence source(options);
+    EXPECT_EQ(source.camera().h0, 1.3);
+    EXPECT_TRUE(source.notes().empty());
+  }
+  // A config for another camera: its h0 wins over the sequence's file, calib.txt's
+  // intrinsics stay, and a note says so.
+  CameraSetup config;
+  config.camera = KittiOdometryCamera();
+  config.h0 = 1.4;
+  WriteCameraYaml(root.File("config.yaml"), config);
+  options.camera_yaml = root.File("config.yaml");
+  {
+    KittiSequence source(options);
+    EXPECT_EQ(source.camera().h0, 1.4);
+    EXPECT_EQ(source.camera().camera.fx, 50.0);
+    ASSERT_EQ(source.notes().size(), 1u);
+    EXPECT_THAT(source.notes()[0], HasSubstr("other intrinsics than calib.txt"));
+  }
+  options.h0 = 1.5;
+  EXPECT_EQ(KittiSequence(options).camera().h0, 1.5);
 }
 
 TEST(KittiSequence, MissingFolderOrNoImages) {
@@ -547,9 +579,10 @@ TEST(KittiSequenceData, SharedSequence00LoadsWithItsFirst200Poses) {
   EXPECT_NEAR(path_length, 144.9, 0.1);
 
   const std::vector<std::string> notes = source.notes();
-  ASSERT_EQ(notes.size(), 2u);
-  EXPECT_THAT(notes[0], HasSubstr("4541 timestamps for 200 images"));
-  EXPECT_THAT(notes[1], HasSubstr("4541 poses for 200 images"));
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_THAT(notes[0], HasSubstr("h0 = 1.65 m"));
+  EXPECT_THAT(notes[1], HasSubstr("4541 timestamps for 200 images"));
+  EXPECT_THAT(notes[2], HasSubstr("4541 poses for 200 images"));
 
   // Every frame decodes at the camera's size; frames are not kept, so memory stays at one
   // image (measured in docs/benchmarks.md).
