@@ -11,4 +11,7 @@ namespace roadscale::cli {
 // `roadscale segment`: label images and overlays from a segmentation model.
 void RegisterSegmentCommand(CLI::App& app);
 
+// `roadscale synth`: synthetic driving sequences with exact ground truth.
+void RegisterSynthCommand(CLI::App& app);
+
 }  // namespace roadscale::cli

@@ -1,0 +1,348 @@
+#include "roadscale/synth/procedural_texture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "roadscale/synth/random.h"
+
+namespace roadscale::synth {
+namespace {
+
+double Clamp01(double x) { return std::min(1.0, std::max(0.0, x)); }
+
+double SmoothStep(double edge0, double edge1, double x) {
+  const double t = Clamp01((x - edge0) / (edge1 - edge0));
+  return t * t * (3.0 - 2.0 * t);
+}
+
+Rgb Scale(const Rgb& c, double k) {
+  return {static_cast<float>(c.r * k), static_cast<float>(c.g * k), static_cast<float>(c.b * k)};
+}
+
+Rgb Mix(const Rgb& a, const Rgb& b, double k) {
+  return {static_cast<float>(a.r + (b.r - a.r) * k), static_cast<float>(a.g + (b.g - a.g) * k),
+          static_cast<float>(a.b + (b.b - a.b) * k)};
+}
+
+Rgb Grey(double v) {
+  const float f = static_cast<float>(v);
+  return {f, f, f};
+}
+
+// Per-object random number in [0, 1) for choice `k`.
+double VariantUnit(uint32_t variant, uint32_t k) {
+  return static_cast<double>(Hash32(variant * 0x9e3779b1U + k * 0x85ebca77U) >> 8) / 16777216.0;
+}
+
+// A pulse of the train (period, width, offset) that the point falls into, for per-cell
+// random shades: index of the cell containing x.
+int64_t CellIndex(double x, double period, double offset) {
+  return static_cast<int64_t>(std::floor((x - offset) / period));
+}
+
+// A 2-D box-filtered rectangle-grid: cells of size (period_s, period_t) with a rectangle of
+// (width_s, width_t) in each.
+double FilteredGrid(const TexelQuery& q, double period_s, double width_s, double offset_s,
+                    double period_t, double width_t, double offset_t) {
+  return FilteredPulse(q.s, period_s, width_s, offset_s, q.footprint_s) *
+         FilteredPulse(q.t, period_t, width_t, offset_t, q.footprint_t);
+}
+
+// Thin dark lines along the zero set of a noise field (cracks, seams), filtered.
+double Cracks(double s, double t, double footprint, double frequency, double width, uint32_t seed) {
+  const double warp = FilteredFbm(s, t, footprint, frequency * 2.0, 2, 0.5, seed + 7);
+  const double n = ValueNoise(s * frequency + warp, t * frequency - warp, seed) - 0.5;
+  // |n| grows roughly by `frequency` per metre away from the crack.
+  const double distance = std::abs(n) / (frequency * 1.3);
+  const double blur = 0.5 * footprint + 0.002;
+  return SmoothStep(width + blur, width - blur, distance) * std::min(1.0, width / blur);
+}
+
+Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const TextureOptions& options = context.options;
+  const uint32_t seed = context.seed ^ 0xa5f1u;
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const double contrast = options.road_contrast;
+  // Low-frequency blotches, grain, wheel polish along the wheel paths.
+  const double blotch = FilteredFbm(q.s, q.t, fp, 0.07, 3, 0.5, seed);
+  const double grain = FilteredFbm(q.s, q.t, fp, 1.5, 5, 0.7, seed + 11);
+  double v = 1.0 + contrast * (0.30 * blotch + 0.55 * grain);
+  // Repairs: patches of different shade with sharp outlines.
+  const double detail = options.road_detail;
+  if (detail > 0.0) {
+    const double patch_noise = ValueNoise(q.s * 0.09, q.t * 0.25, seed + 23);
+    const double edge = 0.02 + fp * 0.09;
+    const double patch =
+        SmoothStep(1.0 - 0.16 * detail - edge, 1.0 - 0.16 * detail + edge, patch_noise);
+    v *= 1.0 + contrast * patch * (0.20 * (VariantUnit(CellIndex(q.s, 37.0, 0.0), 3) - 0.35));
+    const double crack = Cracks(q.s, q.t, fp, 0.22, 0.015, seed + 31);
+    const double crack_density = SmoothStep(0.55 - 0.12 * detail, 0.75 - 0.12 * detail,
+                                            ValueNoise(q.s * 0.03, q.t * 0.1, seed + 37));
+    v *= 1.0 - contrast * 0.45 * crack * crack_density;
+  }
+  Rgb colour = Scale(style.tint, v);
+  // Lane markings: box-filtered across and along the road.
+  for (const LaneMarking& m : context.markings) {
+    if (std::abs(q.t - m.l) > m.width + q.footprint_t) continue;
+    double cover = FilteredPulse(q.t, 1e6, m.width, m.l - 0.5 * m.width, q.footprint_t);
+    if (m.gap > 0.0) cover *= FilteredPulse(q.s, m.dash + m.gap, m.dash, 0.0, q.footprint_s);
+    const double wear = 0.8 + 0.2 * FilteredFbm(q.s, q.t, fp, 3.0, 3, 0.6, seed + 41);
+    colour = Mix(colour, Grey(0.78 * wear), cover);
+  }
+  return colour;
+}
+
+Rgb Paving(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context,
+           double slab_s, double slab_t) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const uint32_t seed = context.seed ^ 0x5e1du ^ style.variant;
+  const double joint = 0.012;
+  const double slab_area =
+      FilteredGrid(q, slab_s, slab_s - joint, 0.0, slab_t, slab_t - joint, 0.0);
+  const int64_t cell_s = CellIndex(q.s, slab_s, 0.0);
+  const int64_t cell_t = CellIndex(q.t, slab_t, 0.0);
+  const double slab_shade =
+      (HashUnit(static_cast<int32_t>(cell_s), static_cast<int32_t>(cell_t), seed) - 0.5) *
+      std::min(1.0, slab_s / (fp + 1e-9) * 0.5);
+  const double grain = FilteredFbm(q.s, q.t, fp, 2.0, 4, 0.6, seed + 3);
+  const double v = (0.80 + 0.20 * slab_area) * (1.0 + 0.12 * slab_shade + 0.35 * grain);
+  return Scale(style.tint, v);
+}
+
+Rgb Facade(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const double contrast = context.options.facade_contrast;
+  const uint32_t v = style.variant;
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const double floor_height = 3.0 + 0.6 * VariantUnit(v, 1);
+  const double spacing = 2.4 + 1.4 * VariantUnit(v, 2);
+  const double window_w = std::min(spacing - 0.7, 0.9 + 0.6 * VariantUnit(v, 3));
+  const double window_h = 1.2 + 0.5 * VariantUnit(v, 4);
+  const double sill = 0.9;
+  const double ground_floor = floor_height + 0.5 * VariantUnit(v, 5);
+  const double offset_s = spacing * VariantUnit(v, 6);
+  const uint32_t seed = context.seed ^ 0xfacau ^ v;
+
+  const double plaster = 1.0 + contrast * (0.25 * FilteredFbm(q.s, q.t, fp, 0.4, 6, 0.55, seed));
+  Rgb colour = Scale(style.tint, plaster);
+  // A dark plinth and a cornice line per floor.
+  const double plinth = FilteredPulse(q.t, 1e6, 0.6, -0.3, q.footprint_t);
+  colour = Scale(colour, 1.0 - contrast * 0.25 * plinth);
+  const double cornice =
+      FilteredPulse(q.t, floor_height, 0.15, ground_floor - 0.15, q.footprint_t) *
+      (q.t > ground_floor - 0.3 ? 1.0 : 0.0);
+  colour = Scale(colour, 1.0 + contrast * 0.12 * cornice);
+
+  double window = 0.0;
+  double frame = 0.0;
+  if (q.t > ground_floor) {
+    const double t0 = ground_floor + sill;
+    window = FilteredGrid(q, spacing, window_w, offset_s, floor_height, window_h, t0);
+    frame = FilteredGrid(q, spacing, window_w + 0.16, offset_s - 0.08, floor_height,
+                         window_h + 0.16, t0 - 0.08);
+  } else if (q.t > 0.0) {
+    // Ground floor: wide shop windows or doors.
+    const double shop_w = 1.2 + 2.0 * VariantUnit(v, 7);
+    const double period = shop_w + 0.8 + 1.5 * VariantUnit(v, 8);
+    window = FilteredPulse(q.s, period, shop_w, offset_s, q.footprint_s) *
+             FilteredPulse(q.t, 1e6, ground_floor - 0.9, 0.5, q.footprint_t);
+    frame = window;
+  }
+  if (frame > 0.0) {
+    // Frames light, glass dark with a sky reflection that brightens upward.
+    colour = Mix(colour, Grey(0.85), contrast * 0.6 * (frame - window));
+    const int64_t cs = CellIndex(q.s, spacing, offset_s);
+    const int64_t ct = CellIndex(q.t, floor_height, 0.0);
+    const double shade = HashUnit(static_cast<int32_t>(cs), static_cast<int32_t>(ct), seed);
+    const double glass = 0.10 + 0.22 * shade;
+    colour = Mix(colour, Grey(glass), std::min(1.0, contrast) * window);
+  }
+  return colour;
+}
+
+Rgb Brick(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const double contrast = context.options.facade_contrast;
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const double course = 0.075;
+  const double row = std::floor(q.t / course);
+  const double shift = std::fmod(row, 2.0) == 0.0 ? 0.0 : 0.125;
+  const double mortar_t = 1.0 - FilteredPulse(q.t, course, course - 0.012, 0.0, q.footprint_t);
+  const double mortar_s = 1.0 - FilteredPulse(q.s, 0.25, 0.238, shift, q.footprint_s);
+  const double mortar = std::max(mortar_t, mortar_s * (1.0 - mortar_t));
+  const double brick_shade = HashUnit(static_cast<int32_t>(CellIndex(q.s, 0.25, shift)),
+                                      static_cast<int32_t>(row), style.variant) -
+                             0.5;
+  const double fade = std::min(1.0, course / (fp + 1e-9) * 0.5);
+  const double grain = FilteredFbm(q.s, q.t, fp, 0.5, 5, 0.6, style.variant + 5);
+  double v = 1.0 + contrast * (0.2 * brick_shade * fade + 0.2 * grain);
+  Rgb colour = Scale(style.tint, v);
+  return Mix(colour, Grey(0.62), contrast * 0.7 * mortar);
+}
+
+Rgb Concrete(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const double stain = FilteredFbm(q.s, q.t, fp, 0.3, 6, 0.6, context.seed ^ style.variant);
+  const double joints = 1.0 - FilteredPulse(q.s, 2.0, 1.98, 0.0, q.footprint_s);
+  return Scale(style.tint, (1.0 + 0.3 * stain) * (1.0 - 0.35 * joints));
+}
+
+Rgb Fence(const SurfaceStyle& style, const TexelQuery& q) {
+  const double slat = FilteredPulse(q.s, 0.14, 0.09, 0.0, q.footprint_s);
+  const double rail = FilteredPulse(q.t, 1e6, 0.08, 0.25, q.footprint_t) +
+                      FilteredPulse(q.t, 1e6, 0.08, 1.1, q.footprint_t);
+  const double solid = std::min(1.0, slat + rail);
+  return Mix(Grey(0.12), style.tint, solid);
+}
+
+Rgb Foliage(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const double contrast = context.options.vegetation_contrast;
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const uint32_t seed = context.seed ^ 0xf011u ^ style.variant;
+  const double clumps = FilteredFbm(q.s, q.t, fp, 0.6, 3, 0.5, seed);
+  const double leaves = FilteredFbm(q.s, q.t, fp, 6.0, 4, 0.7, seed + 9);
+  // Dark gaps between leaf clumps give the strong, dense corners of real trees.
+  const double gaps = SmoothStep(0.05, -0.15, leaves + 0.6 * clumps);
+  const double v = (1.0 + contrast * (0.5 * clumps + 0.8 * leaves)) * (1.0 - 0.6 * contrast * gaps);
+  return Scale(style.tint, std::max(0.05, v));
+}
+
+Rgb Grass(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const uint32_t seed = context.seed ^ 0x64a5u;
+  const double low = FilteredFbm(q.s, q.t, fp, 0.1, 4, 0.5, seed);
+  const double blades = FilteredFbm(q.s, q.t, fp, 4.0, 4, 0.75, seed + 3);
+  return Scale(style.tint, 1.0 + context.options.vegetation_contrast * (0.4 * low + 0.6 * blades));
+}
+
+Rgb Bark(const SurfaceStyle& style, const TexelQuery& q) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  const double n = FilteredFbm(q.s * 6.0, q.t, fp * 6.0, 1.0, 4, 0.6, style.variant);
+  return Scale(style.tint, 1.0 + 0.6 * n);
+}
+
+Rgb CarPaint(const SurfaceStyle& style, const TexelQuery& q) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  // Door seams and a darker sill.
+  const double seams = 1.0 - FilteredPulse(q.s, 1.1, 1.08, 0.3, q.footprint_s);
+  const double sill = FilteredPulse(q.t, 1e6, 0.25, -1.0, q.footprint_t);
+  const double n = FilteredFbm(q.s, q.t, fp, 1.0, 3, 0.5, style.variant);
+  Rgb colour = Scale(style.tint, (1.0 + 0.1 * n) * (1.0 - 0.5 * seams));
+  return Mix(colour, Grey(0.1), 0.7 * sill);
+}
+
+Rgb CarGlass(const SurfaceStyle& style, const TexelQuery& q) {
+  // Pillars between the windows and a reflection gradient.
+  const double pillar = 1.0 - FilteredPulse(q.s, 1.3, 1.15, 0.1, q.footprint_s);
+  const double v = 0.10 + 0.12 * Clamp01(q.t);
+  return Mix(Grey(v), style.tint, pillar);
+}
+
+Rgb Sign(const SurfaceStyle& style, const TexelQuery& q) {
+  const double inner = FilteredPulse(q.s, 1e6, 0.5, 0.05, q.footprint_s) *
+                       FilteredPulse(q.t, 1e6, 0.5, 0.05, q.footprint_t);
+  return Mix(Grey(0.2), style.tint, inner);
+}
+
+Rgb Cloth(const SurfaceStyle& style, const TexelQuery& q) {
+  const double fp = std::max(q.footprint_s, q.footprint_t);
+  return Scale(style.tint, 1.0 + 0.2 * FilteredFbm(q.s, q.t, fp, 3.0, 3, 0.5, style.variant));
+}
+
+}  // namespace
+
+double ValueNoise(double x, double y, uint32_t seed) {
+  const double fx = std::floor(x), fy = std::floor(y);
+  const int32_t ix = static_cast<int32_t>(static_cast<int64_t>(fx));
+  const int32_t iy = static_cast<int32_t>(static_cast<int64_t>(fy));
+  double tx = x - fx, ty = y - fy;
+  tx = tx * tx * (3.0 - 2.0 * tx);
+  ty = ty * ty * (3.0 - 2.0 * ty);
+  const double a = HashUnit(ix, iy, seed), b = HashUnit(ix + 1, iy, seed);
+  const double c = HashUnit(ix, iy + 1, seed), d = HashUnit(ix + 1, iy + 1, seed);
+  const double top = a + (b - a) * tx;
+  const double bottom = c + (d - c) * tx;
+  return top + (bottom - top) * ty;
+}
+
+double FilteredFbm(double x, double y, double footprint, double frequency, int octaves, double gain,
+                   uint32_t seed) {
+  // The norm counts every octave, filtered or not, so that the variance falls with
+  // distance as it does in a properly filtered texture.
+  double norm = 0.0, amplitude = 1.0;
+  for (int o = 0; o < octaves; ++o, amplitude *= gain) norm += amplitude;
+  double sum = 0.0;
+  amplitude = 1.0;
+  for (int o = 0; o < octaves; ++o) {
+    // Full weight while a cell spans four footprints, none below two.
+    const double fade = Clamp01(2.0 - 4.0 * footprint * frequency);
+    if (fade <= 0.0) break;
+    // Offsets keep the lattices of different octaves from lining up.
+    sum += amplitude * fade *
+           (ValueNoise(x * frequency + 17.31 * o, y * frequency - 9.73 * o, seed + o * 101u) - 0.5);
+    frequency *= 2.0;
+    amplitude *= gain;
+  }
+  return norm > 0.0 ? sum / norm * 1.6 : 0.0;
+}
+
+double FilteredPulse(double x, double period, double width, double offset, double footprint) {
+  auto integral = [&](double v) {
+    const double shifted = v - offset;
+    const double k = std::floor(shifted / period);
+    return k * width + std::min(shifted - k * period, width);
+  };
+  if (footprint < 1e-6) {
+    const double shifted = x - offset;
+    const double phase = shifted - std::floor(shifted / period) * period;
+    return phase < width ? 1.0 : 0.0;
+  }
+  return (integral(x + 0.5 * footprint) - integral(x - 0.5 * footprint)) / footprint;
+}
+
+Rgb MaterialAlbedo(const SurfaceStyle& style, const TexelQuery& query,
+                   const TextureContext& context) {
+  switch (style.material) {
+    case Material::kAsphalt:
+      return Asphalt(style, query, context);
+    case Material::kSidewalk:
+      return Paving(style, query, context, 0.3, 0.3);
+    case Material::kPaving:
+      return Paving(style, query, context, 0.6, 0.4);
+    case Material::kKerb:
+      return Concrete(style, query, context);
+    case Material::kGrass:
+      return Grass(style, query, context);
+    case Material::kFacade:
+      return Facade(style, query, context);
+    case Material::kRoof: {
+      const double rows = FilteredPulse(query.t, 0.3, 0.26, 0.0, query.footprint_t);
+      return Scale(style.tint, 0.8 + 0.2 * rows);
+    }
+    case Material::kBrick:
+      return Brick(style, query, context);
+    case Material::kConcrete:
+      return Concrete(style, query, context);
+    case Material::kFence:
+      return Fence(style, query);
+    case Material::kFoliage:
+      return Foliage(style, query, context);
+    case Material::kBark:
+      return Bark(style, query);
+    case Material::kMetal:
+      return style.tint;
+    case Material::kCarPaint:
+      return CarPaint(style, query);
+    case Material::kCarGlass:
+      return CarGlass(style, query);
+    case Material::kTyre:
+      return style.tint;
+    case Material::kCloth:
+      return Cloth(style, query);
+    case Material::kSkin:
+      return style.tint;
+    case Material::kSign:
+      return Sign(style, query);
+  }
+  return style.tint;
+}
+
+}  // namespace roadscale::synth

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+
+namespace roadscale::synth {
+
+// A small, fully specified random generator (xoshiro256** seeded through splitmix64). The
+// standard library's distributions are implementation-defined, so the synthetic scenes draw
+// every random number through this class: the same seed gives the same scene on every
+// platform and compiler.
+class Rng {
+ public:
+  explicit Rng(uint64_t seed);
+
+  uint64_t NextU64();
+  // Uniform in [0, 1).
+  double Uniform();
+  double Uniform(double low, double high) { return low + (high - low) * Uniform(); }
+  // Uniform integer in [low, high].
+  int UniformInt(int low, int high);
+  bool Bernoulli(double probability) { return Uniform() < probability; }
+  // Standard normal (Box-Muller).
+  double Normal();
+  // A generator for a sub-stream: changing how many numbers one part of the scene draws
+  // does not change any other part.
+  Rng Fork(uint64_t stream);
+
+ private:
+  uint64_t state_[4];
+};
+
+// Stateless integer hashes for procedural textures and per-pixel noise.
+uint32_t Hash32(uint32_t x);
+uint32_t Hash3(int32_t x, int32_t y, uint32_t seed);
+// Hash3 mapped to [0, 1).
+inline float HashUnit(int32_t x, int32_t y, uint32_t seed) {
+  return static_cast<float>(Hash3(x, y, seed) >> 8) * (1.0f / 16777216.0f);
+}
+
+}  // namespace roadscale::synth

@@ -1,0 +1,116 @@
+#include "roadscale/synth/scene_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <opencv2/imgcodecs.hpp>
+#include <unistd.h>
+
+#include "roadscale/io/camera_setup.h"
+#include "roadscale/io/kitti_calib.h"
+#include "roadscale/io/trajectory_io.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale::synth {
+namespace {
+
+namespace fs = std::filesystem;
+
+void MakeDirectory(const fs::path& path) {
+  std::error_code error;
+  fs::create_directories(path, error);
+  if (error) ThrowFileError(path.string(), "cannot create folder: " + error.message());
+}
+
+void WritePng(const fs::path& path, const cv::Mat& image) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path.string(), image);
+  } catch (const cv::Exception& e) {
+    ThrowFileError(path.string(), std::string("cannot write image: ") + e.what());
+  }
+  if (!ok) ThrowFileError(path.string(), "cannot write image");
+}
+
+std::string FrameName(int index) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "%06d.png", index);
+  return name;
+}
+
+class TextFile {
+ public:
+  explicit TextFile(const fs::path& path) : path_(path.string()), file_(path_) {
+    if (!file_) ThrowFileError(path_, "cannot open for writing");
+  }
+  std::ofstream& stream() { return file_; }
+  void Close() {
+    file_.flush();
+    if (!file_) ThrowFileError(path_, "write failed");
+    file_.close();
+  }
+
+ private:
+  std::string path_;
+  std::ofstream file_;
+};
+
+}  // namespace
+
+void CheckSequenceName(const std::string& sequence) {
+  bool ok = !sequence.empty() && sequence.size() <= 8;
+  for (const char c : sequence) ok = ok && c >= '0' && c <= '9';
+  if (!ok) throw Error("invalid sequence name '" + sequence + "' (expected digits such as 00)");
+}
+
+void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& options) {
+  CheckSequenceName(options.sequence);
+  const fs::path root(options.out_dir);
+  const fs::path sequence = root / "sequences" / options.sequence;
+  for (const char* folder : {"image_0", "semantic", "depth"}) MakeDirectory(sequence / folder);
+  if (options.colour) MakeDirectory(sequence / "image_2");
+  MakeDirectory(root / "poses");
+
+  const SceneOptions& scene_options = scene.options();
+  WriteKittiCalib((sequence / "calib.txt").string(), scene_options.image.camera);
+  CameraSetup setup;
+  setup.camera = scene_options.image.camera;
+  setup.h0 = scene_options.vehicle.h0;
+  WriteCameraYaml((sequence / "camera.yaml").string(), setup);
+
+  TextFile times(sequence / "times.txt");
+  TextFile planes(sequence / "road_planes.txt");
+  planes.stream() << "# frame nx ny nz h: true road plane in the camera frame (n . X = h for "
+                     "road points under the car, n unit and pointing down)\n";
+  Trajectory trajectory;
+  const bool tty = options.progress && isatty(2);
+  for (int i = 0; i < scene.frames(); ++i) {
+    const SynthFrame frame = scene.Render(i, options.colour);
+    const std::string name = FrameName(i);
+    WritePng(sequence / "image_0" / name, frame.images.grey);
+    if (options.colour) WritePng(sequence / "image_2" / name, frame.images.colour);
+    WritePng(sequence / "semantic" / name, frame.images.labels);
+    WritePng(sequence / "depth" / name, frame.images.depth);
+    char line[160];
+    std::snprintf(line, sizeof(line), "%e\n", frame.time);
+    times.stream() << line;
+    const Eigen::Vector3d& n = frame.road_plane.normal;
+    std::snprintf(line, sizeof(line), "%d %.12f %.12f %.12f %.12f\n", i, n.x(), n.y(), n.z(),
+                  frame.road_plane.height);
+    planes.stream() << line;
+    trajectory.world_from_cam.push_back(frame.world_from_cam);
+    trajectory.timestamps.push_back(frame.time);
+    if (tty) {
+      std::fprintf(stderr, "\rroadscale synth: frame %d / %d", i + 1, scene.frames());
+      std::fflush(stderr);
+    }
+  }
+  if (tty) std::fprintf(stderr, "\n");
+  times.Close();
+  planes.Close();
+  WriteKittiTrajectory((root / "poses" / (options.sequence + ".txt")).string(), trajectory);
+}
+
+}  // namespace roadscale::synth

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+
+#include "roadscale/synth/synthetic_scene.h"
+
+namespace roadscale::synth {
+
+struct SceneWriterOptions {
+  std::string out_dir;          // the dataset root (KITTI layout below it)
+  std::string sequence = "00";  // sequence folder name
+  bool colour = false;          // also write image_2 (BGR)
+  bool progress = false;        // print progress to stderr
+};
+
+// Renders every frame of `scene` and writes, below out_dir:
+//   sequences/NN/image_0/%06d.png   grey frames
+//   sequences/NN/image_2/%06d.png   colour frames (with `colour`)
+//   sequences/NN/semantic/%06d.png  Cityscapes train ids (8 bit)
+//   sequences/NN/depth/%06d.png     z depth, 16 bit, 1/256 m, 0 = none (sky, > 256 m)
+//   sequences/NN/calib.txt, times.txt, camera.yaml (intrinsics and h0)
+//   sequences/NN/road_planes.txt    "frame nx ny nz h" (camera frame, n . X = h)
+//   poses/NN.txt                    world_from_cam, frame 0 = identity
+// Throws Error naming the file that could not be written.
+void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& options);
+
+// "NN" check: one or more digits, as KITTI's sequence folders.
+void CheckSequenceName(const std::string& sequence);
+
+}  // namespace roadscale::synth

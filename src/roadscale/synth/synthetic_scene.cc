@@ -1,0 +1,183 @@
+#include "roadscale/synth/synthetic_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "roadscale/synth/road_generator.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale::synth {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kNearDistance = 0.1;
+
+}  // namespace
+
+SyntheticScene::SyntheticScene(const SceneOptions& options, int frames)
+    : options_(options), frames_(frames) {
+  options_.Check();
+  CheckOption(frames >= 1, "frames", "must be at least 1");
+  Rng root(options.seed);
+  Rng road_rng = root.Fork(1);
+  Rng motion_rng = root.Fork(2);
+  Rng world_rng = root.Fork(3);
+  Rng traffic_rng = root.Fork(4);
+  Rng misc_rng = root.Fork(5);
+
+  const double duration = (frames - 1) / options_.image.frame_rate;
+  motion_ = std::make_unique<VehicleMotion>(options_.vehicle, duration, motion_rng);
+  // Road enough for the last frame's view, and for the lead car ahead of it.
+  const double u_end = motion_->PositionAt(duration + 2.0) + options_.image.far_distance +
+                       options_.traffic.lead_gap_max + 40.0;
+  std::vector<RoadPiece> pieces = options_.road.pieces;
+  if (pieces.empty()) {
+    pieces = GenerateRoadPieces(options_.road, options_.vehicle.start_position, u_end, road_rng);
+  } else {
+    // An explicit road too short for the drive goes on straight.
+    double length = 0.0;
+    for (const RoadPiece& piece : pieces) length += piece.length;
+    if (length < u_end) {
+      RoadPiece rest = pieces.back();
+      rest.curvature = 0.0;
+      rest.length = u_end - length;
+      pieces.push_back(rest);
+    }
+  }
+  line_ = std::make_unique<CentreLine>(pieces);
+  layout_ = MakeLateralLayout(options_.road);
+  const double u_begin = -30.0;
+  index_ = std::make_unique<RoadIndex>(*line_, u_begin - 60.0, u_end + 60.0);
+
+  const double elevation = options_.image.sun_elevation_deg * kDegToRad;
+  const double azimuth = options_.image.sun_azimuth_deg * kDegToRad;
+  sun_ = Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
+                         std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+
+  world_ = BuildStaticWorld(options_, *line_, layout_, *index_, sun_, u_begin, u_end, world_rng);
+  traffic_ = std::make_unique<Traffic>(options_, *line_, layout_, *motion_, duration, u_begin,
+                                       u_end, sun_, traffic_rng);
+  textures_.options = options_.texture;
+  textures_.markings = layout_.markings;
+  textures_.seed = static_cast<uint32_t>(misc_rng.NextU64());
+  noise_seed_ = static_cast<uint32_t>(misc_rng.NextU64());
+  sky_seed_ = static_cast<uint32_t>(misc_rng.NextU64());
+  exposure_phase_ = misc_rng.Uniform(0.0, 2.0 * M_PI);
+  world_from_scene_ = SceneFromCam(0).inverse();
+  rasterizer_ = std::make_unique<Rasterizer>(options_.image.camera, kNearDistance,
+                                             options_.image.far_distance);
+}
+
+VehicleState SyntheticScene::EgoState(int index) const { return motion_->StateAt(Time(index)); }
+
+Rigid3d SyntheticScene::SceneFromCam(int index) const {
+  return VehicleMotion::WorldFromCam(*line_, EgoState(index), options_.vehicle.h0);
+}
+
+Rigid3d SyntheticScene::WorldFromCam(int index) const {
+  return world_from_scene_ * SceneFromCam(index);
+}
+
+RoadPlane SyntheticScene::TrueRoadPlane(int index) const {
+  const VehicleState state = EgoState(index);
+  const RoadFrame frame = line_->FrameAt(state.position);
+  const Rigid3d cam_from_scene = SceneFromCam(index).inverse();
+  RoadPlane plane;
+  plane.normal = cam_from_scene.linear() * -frame.normal;
+  plane.height = plane.normal.dot(cam_from_scene * frame.point);
+  return plane;
+}
+
+SynthFrame SyntheticScene::Render(int index, bool colour) {
+  if (index < 0 || index >= frames_) throw Error("frame index out of range");
+  SynthFrame frame;
+  frame.index = index;
+  frame.time = Time(index);
+  frame.state = EgoState(index);
+  const Rigid3d scene_from_cam = SceneFromCam(index);
+  const Rigid3d cam_from_scene = scene_from_cam.inverse();
+  frame.world_from_cam = world_from_scene_ * scene_from_cam;
+  frame.road_plane = TrueRoadPlane(index);
+
+  const ImageOptions& image = options_.image;
+  const PinholeCamera& camera = image.camera;
+  Rasterizer& rasterizer = *rasterizer_;
+  rasterizer.BeginFrame(cam_from_scene.linear() * sun_, image.ambient);
+
+  // Chunks in view: bounding sphere against the near/far planes and the side planes.
+  const double fx = camera.fx, fy = camera.fy, cx = camera.cx, cy = camera.cy;
+  const Eigen::Vector3d sides[4] = {{-fx, 0.0, -(cx + 0.5)},
+                                    {fx, 0.0, -(camera.width - 0.5 - cx)},
+                                    {0.0, -fy, -(cy + 0.5)},
+                                    {0.0, fy, -(camera.height - 0.5 - cy)}};
+  for (const Chunk& chunk : world_.chunks) {
+    if (chunk.mesh.empty()) continue;
+    const Eigen::Vector3d c = cam_from_scene * chunk.centre;
+    if (c.z() + chunk.radius < kNearDistance || c.z() - chunk.radius > image.far_distance) {
+      continue;
+    }
+    bool outside = false;
+    for (const Eigen::Vector3d& plane : sides) {
+      if (plane.dot(c) > chunk.radius * plane.norm()) {
+        outside = true;
+        break;
+      }
+    }
+    if (!outside) rasterizer.AddMesh(chunk.mesh, cam_from_scene);
+  }
+
+  const double u = frame.state.position;
+  std::vector<ActorPose> actors;
+  std::vector<Mesh> scratch;
+  std::vector<GroundShadow> shadows;
+  traffic_->Collect(frame.time, u - 40.0, u + image.far_distance, &actors, &scratch, &shadows);
+  for (const ActorPose& actor : actors) {
+    rasterizer.AddMesh(*actor.mesh, cam_from_scene * actor.world_from_mesh);
+  }
+  // Ground shadows near the road in view: the parked cars' and this frame's moving cars'.
+  const auto first = std::lower_bound(world_.shadows.begin(), world_.shadows.end(), u - 40.0,
+                                      [](const GroundShadow& s, double v) { return s.u_min < v; });
+  for (auto it = first; it != world_.shadows.end() && it->u_min < u + image.far_distance; ++it) {
+    shadows.push_back(*it);
+  }
+  std::stable_sort(shadows.begin(), shadows.end(),
+                   [](const GroundShadow& a, const GroundShadow& b) { return a.u_min < b.u_min; });
+
+  frame.images.grey.create(camera.height, camera.width, CV_8UC1);
+  frame.images.labels.create(camera.height, camera.width, CV_8UC1);
+  frame.images.depth.create(camera.height, camera.width, CV_16UC1);
+  if (colour) frame.images.colour.create(camera.height, camera.width, CV_8UC3);
+
+  ShadingInputs inputs;
+  inputs.rasterizer = &rasterizer;
+  inputs.textures = &textures_;
+  inputs.world_from_cam_rotation = scene_from_cam.linear();
+  inputs.shadows = &shadows;
+  inputs.tree_shadows = &world_.tree_shadows;
+  inputs.ambient = image.ambient;
+  inputs.haze_distance = image.haze_distance;
+  inputs.far_distance = image.far_distance;
+  inputs.exposure =
+      1.0 + image.exposure_variation *
+                std::sin(2.0 * M_PI * frame.time / image.exposure_period_s + exposure_phase_);
+  inputs.noise_sigma = image.noise_sigma;
+  inputs.noise_seed = Hash32(noise_seed_ + static_cast<uint32_t>(index) * 0x9e3779b9U);
+  inputs.sky_seed = sky_seed_;
+
+  // Bands of rows, one per thread: rasterize, then shade.
+  const int threads = std::min(image.threads, camera.height);
+  auto work = [&](int k) {
+    const int row_begin = camera.height * k / threads;
+    const int row_end = camera.height * (k + 1) / threads;
+    rasterizer.Rasterize(row_begin, row_end);
+    ShadeRows(inputs, row_begin, row_end, &frame.images);
+  };
+  std::vector<std::thread> workers;
+  for (int k = 1; k < threads; ++k) workers.emplace_back(work, k);
+  work(0);
+  for (std::thread& worker : workers) worker.join();
+  return frame;
+}
+
+}  // namespace roadscale::synth
