@@ -1,0 +1,340 @@
+#include "roadscale/eval/plots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include "roadscale/eval/metrics_json.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Colour {
+  double r, g, b;
+};
+constexpr Colour kBlack{0.0, 0.0, 0.0};
+constexpr Colour kGrey{0.85, 0.85, 0.85};
+constexpr Colour kGroundTruth{0.85, 0.1, 0.1};
+constexpr Colour kEstimate{0.1, 0.25, 0.85};
+
+// A closed interval of data values.
+struct Range {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+
+  void Add(double value) {
+    lo = std::min(lo, value);
+    hi = std::max(hi, value);
+  }
+  double Span() const { return hi - lo; }
+  // Widens an empty or zero-width range so that it can be drawn.
+  Range Padded(double fraction, double minimum_half_width) const {
+    Range padded = *this;
+    if (!(lo <= hi)) padded = {0.0, 0.0};
+    const double half = std::max(0.5 * padded.Span() * (1.0 + 2.0 * fraction), minimum_half_width);
+    const double centre = 0.5 * (padded.lo + padded.hi);
+    return {centre - half, centre + half};
+  }
+};
+
+// A tick step of 1, 2 or 5 times a power of ten giving about `target` ticks over `span`.
+double TickStep(double span, int target) {
+  const double raw = span / target;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double normalised = raw / magnitude;
+  if (normalised < 1.5) return magnitude;
+  if (normalised < 3.0) return 2.0 * magnitude;
+  if (normalised < 7.0) return 5.0 * magnitude;
+  return 10.0 * magnitude;
+}
+
+std::string TickLabel(double value, double step) {
+  char buffer[32];
+  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals,
+                std::abs(value) < 1e-12 * step ? 0.0 : value);
+  return buffer;
+}
+
+// Maps data coordinates to the device rectangle [left, right] x [top, bottom] (y up).
+struct Axes {
+  double left, top, right, bottom;
+  Range x, y;
+
+  double X(double value) const { return left + (value - x.lo) / x.Span() * (right - left); }
+  double Y(double value) const { return bottom - (value - y.lo) / y.Span() * (bottom - top); }
+};
+
+void SetColour(cairo_t* cr, const Colour& colour) {
+  cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
+}
+
+void ShowText(cairo_t* cr, const std::string& text, double x, double y, double align_x,
+              double align_y, double angle = 0.0) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  cairo_save(cr);
+  cairo_translate(cr, x, y);
+  cairo_rotate(cr, angle);
+  cairo_move_to(cr, -extents.x_bearing - align_x * extents.width,
+                -extents.y_bearing - align_y * extents.height);
+  cairo_show_text(cr, text.c_str());
+  cairo_restore(cr);
+}
+
+// Frame, grid, tick labels and axis titles.
+void DrawAxes(cairo_t* cr, const Axes& axes, const std::string& x_title, const std::string& y_title,
+              const std::string& title) {
+  cairo_set_font_size(cr, 13.0);
+  cairo_set_line_width(cr, 1.0);
+  const auto draw_ticks = [&](const Range& range, double device_span, bool is_x) {
+    const double step = TickStep(range.Span(), std::max(2, static_cast<int>(device_span / 90.0)));
+    for (double value = std::ceil(range.lo / step) * step; value <= range.hi + 1e-9 * step;
+         value += step) {
+      SetColour(cr, kGrey);
+      if (is_x) {
+        cairo_move_to(cr, axes.X(value), axes.top);
+        cairo_line_to(cr, axes.X(value), axes.bottom);
+      } else {
+        cairo_move_to(cr, axes.left, axes.Y(value));
+        cairo_line_to(cr, axes.right, axes.Y(value));
+      }
+      cairo_stroke(cr);
+      SetColour(cr, kBlack);
+      if (is_x) {
+        ShowText(cr, TickLabel(value, step), axes.X(value), axes.bottom + 6.0, 0.5, 0.0);
+      } else {
+        ShowText(cr, TickLabel(value, step), axes.left - 6.0, axes.Y(value), 1.0, 0.5);
+      }
+    }
+  };
+  draw_ticks(axes.x, axes.right - axes.left, true);
+  draw_ticks(axes.y, axes.bottom - axes.top, false);
+  SetColour(cr, kBlack);
+  cairo_rectangle(cr, axes.left, axes.top, axes.right - axes.left, axes.bottom - axes.top);
+  cairo_stroke(cr);
+  cairo_set_font_size(cr, 15.0);
+  ShowText(cr, x_title, 0.5 * (axes.left + axes.right), axes.bottom + 30.0, 0.5, 0.0);
+  ShowText(cr, y_title, axes.left - 58.0, 0.5 * (axes.top + axes.bottom), 0.5, 0.0, -0.5 * kPi);
+  cairo_set_font_size(cr, 16.0);
+  ShowText(cr, title, 0.5 * (axes.left + axes.right), axes.top - 12.0, 0.5, 1.0);
+}
+
+void DrawLegend(cairo_t* cr, const Axes& axes,
+                const std::vector<std::pair<std::string, Colour>>& entries) {
+  cairo_set_font_size(cr, 13.0);
+  const double row = 20.0;
+  const double width = 150.0;
+  const double x = axes.right - width - 10.0;
+  const double y = axes.top + 10.0;
+  cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.85);
+  cairo_rectangle(cr, x, y, width, row * static_cast<double>(entries.size()) + 8.0);
+  cairo_fill_preserve(cr);
+  SetColour(cr, kBlack);
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const double centre_y = y + 4.0 + row * (static_cast<double>(i) + 0.5);
+    SetColour(cr, entries[i].second);
+    cairo_set_line_width(cr, 2.5);
+    cairo_move_to(cr, x + 8.0, centre_y);
+    cairo_line_to(cr, x + 38.0, centre_y);
+    cairo_stroke(cr);
+    SetColour(cr, kBlack);
+    ShowText(cr, entries[i].first, x + 46.0, centre_y, 0.0, 0.5);
+  }
+}
+
+void DrawPath(cairo_t* cr, const Axes& axes, const std::vector<Rigid3d>& poses,
+              const Colour& colour) {
+  SetColour(cr, colour);
+  cairo_set_line_width(cr, 2.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const Eigen::Vector3d& p = poses[i].translation();
+    if (i == 0) {
+      cairo_move_to(cr, axes.X(p.x()), axes.Y(p.z()));
+    } else {
+      cairo_line_to(cr, axes.X(p.x()), axes.Y(p.z()));
+    }
+  }
+  cairo_stroke(cr);
+}
+
+void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rigid3d>& gt,
+                 const std::vector<Rigid3d>& est) {
+  Range x;
+  Range z;
+  for (const auto* poses : {&gt, &est}) {
+    for (const Rigid3d& pose : *poses) {
+      x.Add(pose.translation().x());
+      z.Add(pose.translation().z());
+    }
+  }
+  Axes axes{80.0, 40.0, width - 30.0, height - 60.0, x.Padded(0.05, 1.0), z.Padded(0.05, 1.0)};
+  // Equal axes: one metre is as long in x as in z; the tighter direction sets the scale and
+  // the other range grows around its centre.
+  const double metres_per_unit =
+      std::max(axes.x.Span() / (axes.right - axes.left), axes.y.Span() / (axes.bottom - axes.top));
+  const auto widen = [&](Range& range, double device_span) {
+    const double half = 0.5 * device_span * metres_per_unit;
+    const double centre = 0.5 * (range.lo + range.hi);
+    range = {centre - half, centre + half};
+  };
+  widen(axes.x, axes.right - axes.left);
+  widen(axes.y, axes.bottom - axes.top);
+
+  DrawAxes(cr, axes, "x [m]", "z [m]", "Trajectory (top view)");
+  DrawPath(cr, axes, gt, kGroundTruth);
+  DrawPath(cr, axes, est, kEstimate);
+  if (!gt.empty()) {
+    SetColour(cr, kBlack);
+    const Eigen::Vector3d& start = gt.front().translation();
+    cairo_rectangle(cr, axes.X(start.x()) - 5.0, axes.Y(start.z()) - 5.0, 10.0, 10.0);
+    cairo_fill(cr);
+  }
+  DrawLegend(cr, axes,
+             {{"Ground truth", kGroundTruth}, {"Estimate", kEstimate}, {"Start", kBlack}});
+}
+
+void DrawErrorPlot(cairo_t* cr, double width, double height, const KittiOdometryResult& kitti,
+                   bool translation) {
+  std::vector<std::pair<double, double>> points;
+  Range x;
+  Range y;
+  y.Add(0.0);
+  for (const KittiLengthResult& length : kitti.per_length) {
+    x.Add(length.length_m);
+    const std::optional<float>& err = translation ? length.t_err : length.r_err;
+    if (!err) continue;
+    const double value = translation ? KittiTErrPercent(*err) : KittiRErrDegPerMetre(*err);
+    points.emplace_back(length.length_m, value);
+    y.Add(value);
+  }
+  Range y_range = y;
+  y_range.lo = 0.0;
+  y_range.hi = y.hi > 0.0 ? 1.1 * y.hi : 1.0;
+  // Half the spacing of the lengths on each side, so that the end points are not on the
+  // frame.
+  const size_t n_lengths = kitti.per_length.size();
+  const double x_pad = n_lengths >= 2 ? 0.5 * x.Span() / static_cast<double>(n_lengths - 1) : 0.0;
+  Axes axes{90.0, 40.0, width - 30.0, height - 60.0, x.Padded(0.0, 50.0), y_range};
+  axes.x.lo -= x_pad;
+  axes.x.hi += x_pad;
+
+  DrawAxes(
+      cr, axes, "Path length [m]", translation ? "Translation error [%]" : "Rotation error [deg/m]",
+      translation ? "Translation error vs. segment length" : "Rotation error vs. segment length");
+  if (points.empty()) {
+    SetColour(cr, kBlack);
+    cairo_set_font_size(cr, 15.0);
+    char message[160];
+    std::snprintf(
+        message, sizeof(message), "no segment of %g m fits a %.1f m trajectory",
+        kitti.per_length.empty() ? 0.0 : static_cast<double>(kitti.per_length.front().length_m),
+        static_cast<double>(kitti.gt_path_length_m));
+    ShowText(cr, message, 0.5 * (axes.left + axes.right), 0.5 * (axes.top + axes.bottom), 0.5, 0.5);
+    return;
+  }
+  SetColour(cr, kEstimate);
+  cairo_set_line_width(cr, 2.0);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double px = axes.X(points[i].first);
+    const double py = axes.Y(points[i].second);
+    if (i == 0) {
+      cairo_move_to(cr, px, py);
+    } else {
+      cairo_line_to(cr, px, py);
+    }
+  }
+  cairo_stroke(cr);
+  for (const auto& [length, value] : points) {
+    cairo_rectangle(cr, axes.X(length) - 4.0, axes.Y(value) - 4.0, 8.0, 8.0);
+    cairo_stroke(cr);
+  }
+}
+
+using DrawFunction = std::function<void(cairo_t*, double, double)>;
+
+void CheckCairo(cairo_status_t status, const std::string& path) {
+  if (status != CAIRO_STATUS_SUCCESS) {
+    ThrowFileError(path, std::string("cannot write the plot: ") + cairo_status_to_string(status));
+  }
+}
+
+void RenderWhiteBackground(cairo_t* cr) {
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_paint(cr);
+}
+
+void WritePng(const std::string& path, int width, int height, const DrawFunction& draw) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
+  cairo_t* cr = cairo_create(surface);
+  RenderWhiteBackground(cr);
+  draw(cr, width, height);
+  const cairo_status_t draw_status = cairo_status(cr);
+  cairo_destroy(cr);
+  const cairo_status_t write_status = draw_status == CAIRO_STATUS_SUCCESS
+                                          ? cairo_surface_write_to_png(surface, path.c_str())
+                                          : draw_status;
+  cairo_surface_destroy(surface);
+  CheckCairo(write_status, path);
+}
+
+void WriteSvg(const std::string& path, int width, int height, const DrawFunction& draw) {
+  cairo_surface_t* surface = cairo_svg_surface_create(path.c_str(), width, height);
+  cairo_t* cr = cairo_create(surface);
+  RenderWhiteBackground(cr);
+  draw(cr, width, height);
+  const cairo_status_t draw_status = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const cairo_status_t write_status =
+      draw_status == CAIRO_STATUS_SUCCESS ? cairo_surface_status(surface) : draw_status;
+  cairo_surface_destroy(surface);
+  CheckCairo(write_status, path);
+}
+
+}  // namespace
+
+std::vector<std::string> WriteEvaluationPlots(const std::string& directory,
+                                              const std::vector<Rigid3d>& gt_world_from_cam,
+                                              const std::vector<Rigid3d>& est_world_from_cam,
+                                              const KittiOdometryResult& kitti) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) ThrowFileError(directory, "cannot create the plot folder: " + error.message());
+
+  const std::vector<std::pair<std::string, std::pair<int, DrawFunction>>> figures = {
+      {"trajectory_top_view",
+       {800, [&](cairo_t* cr, double w,
+                 double h) { DrawTopView(cr, w, h, gt_world_from_cam, est_world_from_cam); }}},
+      {"t_err_vs_length",
+       {500, [&](cairo_t* cr, double w, double h) { DrawErrorPlot(cr, w, h, kitti, true); }}},
+      {"r_err_vs_length",
+       {500, [&](cairo_t* cr, double w, double h) { DrawErrorPlot(cr, w, h, kitti, false); }}},
+  };
+  std::vector<std::string> written;
+  for (const auto& [name, size_and_draw] : figures) {
+    const auto& [height, draw] = size_and_draw;
+    const std::string stem = (std::filesystem::path(directory) / name).string();
+    WritePng(stem + ".png", 800, height, draw);
+    written.push_back(stem + ".png");
+    WriteSvg(stem + ".svg", 800, height, draw);
+    written.push_back(stem + ".svg");
+  }
+  return written;
+}
+
+}  // namespace roadscale

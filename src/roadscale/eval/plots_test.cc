@@ -1,0 +1,133 @@
+#include "roadscale/eval/plots.h"
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <cairo.h>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/eval/test_trajectories.h"
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+TEST(Plots, WritesPngAndSvgOfEachFigure) {
+  const std::vector<Rigid3d> gt = testing::CurvyDrive(1200, 1.0);
+  const std::vector<Rigid3d> est = testing::PerturbedEstimate(gt, 11, 0.05, 0.02, 2e-4);
+  testing::TempDir dir;
+  const std::string folder = dir.File("plots/nested");
+  const std::vector<std::string> written =
+      WriteEvaluationPlots(folder, gt, est, EvaluateKittiOdometry(gt, est));
+  ASSERT_EQ(written.size(), 6u);
+  for (const std::string name : {"trajectory_top_view", "t_err_vs_length", "r_err_vs_length"}) {
+    const std::string png = folder + "/" + name + ".png";
+    const std::string svg = folder + "/" + name + ".svg";
+    ASSERT_TRUE(std::filesystem::exists(png)) << png;
+    ASSERT_TRUE(std::filesystem::exists(svg)) << svg;
+    cairo_surface_t* image = cairo_image_surface_create_from_png(png.c_str());
+    EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS) << png;
+    EXPECT_EQ(cairo_image_surface_get_width(image), 800) << png;
+    cairo_surface_destroy(image);
+    const std::string svg_text = ReadAll(svg);
+    EXPECT_NE(svg_text.find("<svg"), std::string::npos) << svg;
+    EXPECT_NE(svg_text.find("<path"), std::string::npos) << svg;
+  }
+}
+
+// Bounding box of the pixels of one colour, outside the legend (top right).
+struct PixelBox {
+  int min_x = 1 << 30, max_x = -1, min_y = 1 << 30, max_y = -1;
+  int Width() const { return max_x - min_x + 1; }
+  int Height() const { return max_y - min_y + 1; }
+};
+
+TEST(Plots, TopViewDrawsXAgainstZWithEqualAxes) {
+  // The ground truth (red) runs 99 m along +z, the estimate (blue) 99 m along +x: red must
+  // be a vertical line, blue a horizontal one, equally long on the image.
+  std::vector<Rigid3d> gt;
+  std::vector<Rigid3d> est;
+  for (int i = 0; i < 100; ++i) {
+    gt.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, i)));
+    est.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(i, 0, 0)));
+  }
+  testing::TempDir dir;
+  WriteEvaluationPlots(dir.path().string(), gt, est, EvaluateKittiOdometry(gt, est));
+  cairo_surface_t* image =
+      cairo_image_surface_create_from_png(dir.File("trajectory_top_view.png").c_str());
+  ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  const int width = cairo_image_surface_get_width(image);
+  const int height = cairo_image_surface_get_height(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  PixelBox red;
+  PixelBox blue;
+  const auto add = [](PixelBox& box, int x, int y) {
+    box.min_x = std::min(box.min_x, x);
+    box.max_x = std::max(box.max_x, x);
+    box.min_y = std::min(box.min_y, y);
+    box.max_y = std::max(box.max_y, y);
+  };
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (x > width - 220 && y < 140) continue;  // legend
+      uint32_t pixel;
+      std::memcpy(&pixel, data + y * stride + 4 * x, sizeof(pixel));
+      const int r = (pixel >> 16) & 0xff;
+      const int g = (pixel >> 8) & 0xff;
+      const int b = pixel & 0xff;
+      if (r > 180 && g < 80 && b < 80) add(red, x, y);
+      if (b > 180 && r < 80 && g < 120) add(blue, x, y);
+    }
+  }
+  cairo_surface_destroy(image);
+  ASSERT_GE(red.max_x, 0);
+  ASSERT_GE(blue.max_x, 0);
+  EXPECT_LT(red.Width(), 6);
+  EXPECT_GT(red.Height(), 400);
+  EXPECT_LT(blue.Height(), 6);
+  EXPECT_GT(blue.Width(), 400);
+  EXPECT_NEAR(red.Height(), blue.Width(), 3);
+  // z grows upwards, x to the right, both from the shared start (under the 10 px start
+  // marker, which hides the first 5 px of each line).
+  EXPECT_NEAR(red.max_y, blue.max_y, 8);
+  EXPECT_NEAR(red.min_x, blue.min_x, 8);
+  EXPECT_LT(red.min_y, blue.min_y - 400);
+  EXPECT_GT(blue.max_x, red.max_x + 400);
+}
+
+TEST(Plots, ErrorPlotsAreWrittenWhenNoLengthFits) {
+  std::vector<Rigid3d> gt;
+  for (int i = 0; i < 46; ++i) {
+    gt.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, i)));
+  }
+  testing::TempDir dir;
+  WriteEvaluationPlots(dir.path().string(), gt, gt, EvaluateKittiOdometry(gt, gt));
+  EXPECT_GT(std::filesystem::file_size(dir.File("t_err_vs_length.png")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(dir.File("r_err_vs_length.svg")), 1000u);
+}
+
+TEST(Plots, UnwritableFolderIsAnError) {
+  testing::TempDir dir;
+  const std::string file = testing::WriteTextFile(dir.File("not_a_folder"), "x");
+  std::vector<Rigid3d> gt(3, Rigid3d::Identity());
+  try {
+    WriteEvaluationPlots(file + "/plots", gt, gt, EvaluateKittiOdometry(gt, gt));
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not_a_folder"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace roadscale
