@@ -8,6 +8,9 @@ namespace roadscale::cli {
 // these functions. A subcommand's callback throws roadscale::Error on bad input; main()
 // turns it into one line on stderr and a non-zero exit code.
 
+// `roadscale eval`: KITTI devkit metric, ATE, RPE and drift of an estimated trajectory.
+void RegisterEvalCommand(CLI::App& app);
+
 // `roadscale segment`: label images and overlays from a segmentation model.
 void RegisterSegmentCommand(CLI::App& app);
 
