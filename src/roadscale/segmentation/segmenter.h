@@ -11,7 +11,8 @@ namespace roadscale {
 
 // One semantic segmentation backend: a network, precomputed label images, or none. Every
 // backend gives Cityscapes train ids and the masks derived from them, so that the later
-// stages never know which one ran.
+// stages never know which one ran. Not thread-safe: segment from one thread (the pipeline's
+// segmentation stage), or give each thread its own segmenter.
 class Segmenter {
  public:
   virtual ~Segmenter() = default;
