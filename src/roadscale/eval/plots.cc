@@ -98,6 +98,7 @@ void DrawAxes(cairo_t* cr, const Axes& axes, const std::string& x_title, const s
               const std::string& title) {
   cairo_set_font_size(cr, 13.0);
   cairo_set_line_width(cr, 1.0);
+  double widest_y_label = 0.0;
   const auto draw_ticks = [&](const Range& range, double device_span, bool is_x) {
     const double step = TickStep(range.Span(), std::max(2, static_cast<int>(device_span / 90.0)));
     for (double value = std::ceil(range.lo / step) * step; value <= range.hi + 1e-9 * step;
@@ -115,7 +116,11 @@ void DrawAxes(cairo_t* cr, const Axes& axes, const std::string& x_title, const s
       if (is_x) {
         ShowText(cr, TickLabel(value, step), axes.X(value), axes.bottom + 6.0, 0.5, 0.0);
       } else {
-        ShowText(cr, TickLabel(value, step), axes.left - 6.0, axes.Y(value), 1.0, 0.5);
+        const std::string label = TickLabel(value, step);
+        cairo_text_extents_t extents;
+        cairo_text_extents(cr, label.c_str(), &extents);
+        widest_y_label = std::max(widest_y_label, extents.width);
+        ShowText(cr, label, axes.left - 6.0, axes.Y(value), 1.0, 0.5);
       }
     }
   };
@@ -126,13 +131,20 @@ void DrawAxes(cairo_t* cr, const Axes& axes, const std::string& x_title, const s
   cairo_stroke(cr);
   cairo_set_font_size(cr, 15.0);
   ShowText(cr, x_title, 0.5 * (axes.left + axes.right), axes.bottom + 30.0, 0.5, 0.0);
-  ShowText(cr, y_title, axes.left - 58.0, 0.5 * (axes.top + axes.bottom), 0.5, 0.0, -0.5 * kPi);
+  // Left of the widest tick label, whatever the numbers' width.
+  ShowText(cr, y_title, axes.left - widest_y_label - 32.0, 0.5 * (axes.top + axes.bottom), 0.5, 0.0,
+           -0.5 * kPi);
   cairo_set_font_size(cr, 16.0);
   ShowText(cr, title, 0.5 * (axes.left + axes.right), axes.top - 12.0, 0.5, 1.0);
 }
 
-void DrawLegend(cairo_t* cr, const Axes& axes,
-                const std::vector<std::pair<std::string, Colour>>& entries) {
+struct LegendEntry {
+  std::string label;
+  Colour colour;
+  bool square = false;  // a square marker instead of a line
+};
+
+void DrawLegend(cairo_t* cr, const Axes& axes, const std::vector<LegendEntry>& entries) {
   cairo_set_font_size(cr, 13.0);
   const double row = 20.0;
   const double width = 150.0;
@@ -146,13 +158,18 @@ void DrawLegend(cairo_t* cr, const Axes& axes,
   cairo_stroke(cr);
   for (size_t i = 0; i < entries.size(); ++i) {
     const double centre_y = y + 4.0 + row * (static_cast<double>(i) + 0.5);
-    SetColour(cr, entries[i].second);
-    cairo_set_line_width(cr, 2.5);
-    cairo_move_to(cr, x + 8.0, centre_y);
-    cairo_line_to(cr, x + 38.0, centre_y);
-    cairo_stroke(cr);
+    SetColour(cr, entries[i].colour);
+    if (entries[i].square) {
+      cairo_rectangle(cr, x + 18.0, centre_y - 5.0, 10.0, 10.0);
+      cairo_fill(cr);
+    } else {
+      cairo_set_line_width(cr, 2.5);
+      cairo_move_to(cr, x + 8.0, centre_y);
+      cairo_line_to(cr, x + 38.0, centre_y);
+      cairo_stroke(cr);
+    }
     SetColour(cr, kBlack);
-    ShowText(cr, entries[i].first, x + 46.0, centre_y, 0.0, 0.5);
+    ShowText(cr, entries[i].label, x + 46.0, centre_y, 0.0, 0.5);
   }
 }
 
@@ -205,7 +222,7 @@ void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rig
     cairo_fill(cr);
   }
   DrawLegend(cr, axes,
-             {{"Ground truth", kGroundTruth}, {"Estimate", kEstimate}, {"Start", kBlack}});
+             {{"Ground truth", kGroundTruth}, {"Estimate", kEstimate}, {"Start", kBlack, true}});
 }
 
 void DrawErrorPlot(cairo_t* cr, double width, double height, const KittiOdometryResult& kitti,
@@ -229,7 +246,7 @@ void DrawErrorPlot(cairo_t* cr, double width, double height, const KittiOdometry
   // frame.
   const size_t n_lengths = kitti.per_length.size();
   const double x_pad = n_lengths >= 2 ? 0.5 * x.Span() / static_cast<double>(n_lengths - 1) : 0.0;
-  Axes axes{90.0, 40.0, width - 30.0, height - 60.0, x.Padded(0.0, 50.0), y_range};
+  Axes axes{100.0, 40.0, width - 30.0, height - 60.0, x.Padded(0.0, 50.0), y_range};
   axes.x.lo -= x_pad;
   axes.x.hi += x_pad;
 
