@@ -30,6 +30,9 @@ std::vector<int> Compose(const std::vector<int>& indices, const std::vector<int>
 void ScaleEstimatorOptions::Check() const {
   CheckOption(std::isfinite(camera_height) && camera_height > 0.0, "scale.camera_height",
               "must be a positive number of metres (h0)");
+  CheckOption(std::isfinite(min_angle_below_horizon_deg) && min_angle_below_horizon_deg >= 0.0 &&
+                  min_angle_below_horizon_deg < 45.0,
+              "scale.min_angle_below_horizon_deg", "must be in [0, 45) degrees");
   triangulation.Check();
   depth_vote.Check();
   road_model.Check();
@@ -112,7 +115,8 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
   estimate.used_road_mask = options_.use_segmentation && !prev_road_mask.empty();
   std::vector<int> selection = PreselectRoadCandidates(
       pixels, triangulated.points, estimate.used_road_mask ? prev_road_mask : no_mask,
-      options_.use_horizon ? road_normal : std::nullopt);
+      options_.use_horizon ? road_normal : std::nullopt,
+      options_.min_angle_below_horizon_deg * M_PI / 180.0);
   estimate.num_preselected = static_cast<int>(selection.size());
 
   if (options_.use_depth_vote) {

@@ -25,8 +25,12 @@ struct ScaleEstimatorOptions {
   // h0 of eq. (13): the camera's height above the road in metres (KITTI's documented 1.65).
   double camera_height = 1.65;
 
-  bool use_segmentation = true;      // Alg. 1 lines 1-5: keep road-mask pixels (when given)
-  bool use_horizon = true;           // keep points below the horizon only
+  bool use_segmentation = true;  // Alg. 1 lines 1-5: keep road-mask pixels (when given)
+  bool use_horizon = true;       // keep points below the horizon only
+  // Beyond the paper (0 = the paper): keep only points whose viewing ray is this far below
+  // the horizon, i.e. road nearer than h0 / tan(angle) (3 deg: about 31 m at 1.65 m). Far road
+  // points have little parallax: their depths are noisy and biased.
+  double min_angle_below_horizon_deg = 0.0;
   bool use_depth_vote = true;        // Alg. 1: the depth-consistency vote
   bool use_road_model_check = true;  // Alg. 2: triangles parallel to the expected road
   bool use_filter = true;            // eqs. (14)-(16): the mixed filter
