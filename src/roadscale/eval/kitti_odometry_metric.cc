@@ -3,26 +3,90 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "roadscale/util/error.h"
 
-#include <Eigen/LU>
-
-// This file must be compiled without fused multiply-add contraction (see CMakeLists.txt):
-// the devkit's float path distances round after every product and sum, and one different
-// rounding can move a segment's end frame.
+// This file must be compiled without fused multiply-add contraction (see CMakeLists.txt),
+// and its float arithmetic is written as plain scalar loops rather than Eigen's vectorised
+// (and, with FMA available, fused) kernels: every product and sum rounds to float on its
+// own, in a fixed order, on every platform. The devkit's path distances decide segment
+// ends, and its r_err is dominated by the float acos of cosines near 1, so both are
+// sensitive to the rounding of single operations.
 
 namespace roadscale {
 namespace {
 
-std::vector<Eigen::Matrix4f> ToFloatPoses(const std::vector<Rigid3d>& poses) {
-  std::vector<Eigen::Matrix4f> result;
-  result.reserve(poses.size());
-  for (const Rigid3d& pose : poses) result.push_back(pose.matrix().cast<float>());
+// A 4x4 homogeneous pose in single precision, m[row][col].
+struct Pose4f {
+  float m[4][4];
+};
+
+Pose4f ToFloat(const Rigid3d& pose, const char* which, size_t index) {
+  Pose4f result;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      result.m[r][c] = static_cast<float>(pose.matrix()(r, c));
+      if (!std::isfinite(result.m[r][c])) {
+        throw Error(std::string("the KITTI metric computes in single precision, and ") + which +
+                    " pose " + std::to_string(index + 1) + " has a value beyond its range");
+      }
+    }
+  }
   return result;
 }
 
-std::vector<float> PathDistances(const std::vector<Eigen::Matrix4f>& poses) {
+std::vector<Pose4f> ToFloatPoses(const std::vector<Rigid3d>& poses, const char* which) {
+  std::vector<Pose4f> result;
+  result.reserve(poses.size());
+  for (size_t i = 0; i < poses.size(); ++i) result.push_back(ToFloat(poses[i], which, i));
+  return result;
+}
+
+Pose4f Multiply(const Pose4f& a, const Pose4f& b) {
+  Pose4f c;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      float sum = 0.0f;
+      for (int k = 0; k < 4; ++k) sum += a.m[i][k] * b.m[k][j];
+      c.m[i][j] = sum;
+    }
+  }
+  return c;
+}
+
+// The general inverse by Gauss-Jordan elimination with partial pivoting, in float. General
+// rather than rigid (R^T, -R^T t): estimates written with few digits are not exactly rigid,
+// and the devkit inverts them as general matrices.
+Pose4f Inverse(const Pose4f& pose) {
+  Pose4f a = pose;
+  Pose4f inverse{};
+  for (int i = 0; i < 4; ++i) inverse.m[i][i] = 1.0f;
+  for (int col = 0; col < 4; ++col) {
+    int pivot = col;
+    for (int row = col + 1; row < 4; ++row) {
+      if (std::fabs(a.m[row][col]) > std::fabs(a.m[pivot][col])) pivot = row;
+    }
+    std::swap(a.m[col], a.m[pivot]);
+    std::swap(inverse.m[col], inverse.m[pivot]);
+    const float diagonal = a.m[col][col];
+    for (int k = 0; k < 4; ++k) {
+      a.m[col][k] /= diagonal;
+      inverse.m[col][k] /= diagonal;
+    }
+    for (int row = 0; row < 4; ++row) {
+      if (row == col) continue;
+      const float factor = a.m[row][col];
+      for (int k = 0; k < 4; ++k) {
+        a.m[row][k] -= factor * a.m[col][k];
+        inverse.m[row][k] -= factor * inverse.m[col][k];
+      }
+    }
+  }
+  return inverse;
+}
+
+std::vector<float> PathDistances(const std::vector<Pose4f>& poses) {
   std::vector<float> dist;
   dist.reserve(poses.size());
   for (size_t i = 0; i < poses.size(); ++i) {
@@ -30,12 +94,20 @@ std::vector<float> PathDistances(const std::vector<Eigen::Matrix4f>& poses) {
       dist.push_back(0.0f);
       continue;
     }
-    const float dx = poses[i - 1](0, 3) - poses[i](0, 3);
-    const float dy = poses[i - 1](1, 3) - poses[i](1, 3);
-    const float dz = poses[i - 1](2, 3) - poses[i](2, 3);
+    const float dx = poses[i - 1].m[0][3] - poses[i].m[0][3];
+    const float dy = poses[i - 1].m[1][3] - poses[i].m[1][3];
+    const float dz = poses[i - 1].m[2][3] - poses[i].m[2][3];
     dist.push_back(dist.back() + std::sqrt(dx * dx + dy * dy + dz * dz));
   }
   return dist;
+}
+
+float RotationErrorOf(const Pose4f& error) {
+  Eigen::Matrix3f rotation;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) rotation(r, c) = error.m[r][c];
+  }
+  return KittiRotationError(rotation);
 }
 
 // The first frame at or after `first` whose path distance exceeds dist[first] + length, or
@@ -69,7 +141,7 @@ float KittiRotationError(const Eigen::Matrix3f& rotation) {
 }
 
 std::vector<float> KittiPathDistances(const std::vector<Rigid3d>& world_from_cam) {
-  return PathDistances(ToFloatPoses(world_from_cam));
+  return PathDistances(ToFloatPoses(world_from_cam, "a"));
 }
 
 KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_from_cam,
@@ -83,8 +155,8 @@ KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_f
   }
   if (gt_world_from_cam.empty()) throw Error("the KITTI metric needs at least one pose");
 
-  const std::vector<Eigen::Matrix4f> gt = ToFloatPoses(gt_world_from_cam);
-  const std::vector<Eigen::Matrix4f> est = ToFloatPoses(est_world_from_cam);
+  const std::vector<Pose4f> gt = ToFloatPoses(gt_world_from_cam, "ground-truth");
+  const std::vector<Pose4f> est = ToFloatPoses(est_world_from_cam, "estimated");
   const std::vector<float> dist = PathDistances(gt);
   const int n = static_cast<int>(gt.size());
 
@@ -94,18 +166,18 @@ KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_f
     for (float length : options.lengths_m) {
       const int last = LastFrameOfSegment(dist, first, length);
       if (last < 0) continue;
-      const Eigen::Matrix4f gt_delta = gt[first].inverse() * gt[last];
-      const Eigen::Matrix4f est_delta = est[first].inverse() * est[last];
-      const Eigen::Matrix4f error = est_delta.inverse() * gt_delta;
-      const float tx = error(0, 3);
-      const float ty = error(1, 3);
-      const float tz = error(2, 3);
+      const Pose4f gt_delta = Multiply(Inverse(gt[first]), gt[last]);
+      const Pose4f est_delta = Multiply(Inverse(est[first]), est[last]);
+      const Pose4f error = Multiply(Inverse(est_delta), gt_delta);
+      const float tx = error.m[0][3];
+      const float ty = error.m[1][3];
+      const float tz = error.m[2][3];
       KittiSegmentError segment;
       segment.first_frame = first;
       segment.last_frame = last;
       segment.length_m = length;
       segment.t_err = std::sqrt(tx * tx + ty * ty + tz * tz) / length;
-      segment.r_err = KittiRotationError(error.topLeftCorner<3, 3>()) / length;
+      segment.r_err = RotationErrorOf(error) / length;
       result.segments.push_back(segment);
     }
   }
