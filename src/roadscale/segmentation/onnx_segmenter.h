@@ -36,15 +36,11 @@ class OnnxSegmenter : public Segmenter {
   cv::Mat Labels(const cv::Mat& image);
 
  private:
-  cv::Mat MakeBlob(const cv::Mat& image) const;
   cv::Mat Forward(const cv::Mat& blob);
-  // Checks the output's shape; returns the output's label map at the network's size.
-  cv::Mat OutputLabels(const cv::Mat& output) const;
 
   SegmentationModel model_;
   Options options_;
   cv::dnn::Net net_;
-  cv::Mat train_id_table_;  // class index -> train id (cv::LUT)
 };
 
 }  // namespace roadscale
