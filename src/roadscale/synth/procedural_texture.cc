@@ -58,23 +58,60 @@ double Cracks(double s, double t, double footprint, double frequency, double wid
   return SmoothStep(width + blur, width - blur, distance) * std::min(1.0, width / blur);
 }
 
+// Sparse dark discs (oil drops, stains, filled holes): at most one per square cell of side
+// `cell`, inside it, with probability `density`. Returns the filtered coverage.
+double Spots(double s, double t, double footprint, double cell, double density, double r_min,
+             double r_max, uint32_t seed) {
+  const int32_t ci = static_cast<int32_t>(std::floor(s / cell));
+  const int32_t cj = static_cast<int32_t>(std::floor(t / cell));
+  const uint32_t h = Hash3(ci, cj, seed);
+  if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
+  const double radius = r_min + (r_max - r_min) * (Hash32(h) >> 8) / 16777216.0;
+  const double margin = std::min(radius, 0.5 * cell);
+  const double cs = ci * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 1) >> 8) / 16777216.0;
+  const double ct = cj * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 2) >> 8) / 16777216.0;
+  const double d = std::hypot(s - cs, t - ct);
+  const double soft = 0.5 * footprint + 0.004;
+  return SmoothStep(radius + soft, radius - soft, d) * std::min(1.0, radius / soft);
+}
+
+// Rectangular repairs (utility cuts) aligned with the road: at most one per cell of
+// cell_s x cell_t. Returns the filtered coverage and the patch's shade in [-1, 1].
+double Repairs(const TexelQuery& q, double cell_s, double cell_t, double density, uint32_t seed,
+               double* shade) {
+  const int32_t ci = static_cast<int32_t>(std::floor(q.s / cell_s));
+  const int32_t cj = static_cast<int32_t>(std::floor(q.t / cell_t));
+  const uint32_t h = Hash3(ci, cj, seed);
+  if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
+  auto unit = [&](uint32_t k) { return (Hash32(h + k) >> 8) / 16777216.0; };
+  const double length = cell_s * (0.2 + 0.6 * unit(1));
+  const double width = cell_t * (0.2 + 0.6 * unit(2));
+  const double s0 = ci * cell_s + (cell_s - length) * unit(3);
+  const double t0 = cj * cell_t + (cell_t - width) * unit(4);
+  *shade = 2.0 * unit(5) - 1.0;
+  return FilteredPulse(q.s, 1e9, length, s0, q.footprint_s) *
+         FilteredPulse(q.t, 1e9, width, t0, q.footprint_t);
+}
+
 Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
   const TextureOptions& options = context.options;
   const uint32_t seed = context.seed ^ 0xa5f1u;
   const double fp = std::max(q.footprint_s, q.footprint_t);
   const double contrast = options.road_contrast;
-  // Low-frequency blotches, grain, wheel polish along the wheel paths.
-  const double blotch = FilteredFbm(q.s, q.t, fp, 0.07, 3, 0.5, seed);
-  const double grain = FilteredFbm(q.s, q.t, fp, 1.5, 5, 0.7, seed + 11);
-  double v = 1.0 + contrast * (0.30 * blotch + 0.55 * grain);
-  // Repairs: patches of different shade with sharp outlines.
+  // Large stains, medium blotches and a fine grain that fades with distance, as real
+  // asphalt does in a camera image.
+  const double stains = FilteredFbm(q.s, q.t, fp, 0.05, 3, 0.5, seed);
+  const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 3, 0.6, seed + 5);
+  const double grain = FilteredFbm(q.s, q.t, fp, 4.0, 5, 0.85, seed + 11);
+  double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 0.35 * grain);
+  // Detail that gives the road its few, strong corners: repairs, spots, cracks.
   const double detail = options.road_detail;
   if (detail > 0.0) {
-    const double patch_noise = ValueNoise(q.s * 0.09, q.t * 0.25, seed + 23);
-    const double edge = 0.02 + fp * 0.09;
-    const double patch =
-        SmoothStep(1.0 - 0.16 * detail - edge, 1.0 - 0.16 * detail + edge, patch_noise);
-    v *= 1.0 + contrast * patch * (0.20 * (VariantUnit(CellIndex(q.s, 37.0, 0.0), 3) - 0.35));
+    double shade = 0.0;
+    const double repair = Repairs(q, 9.0, 3.5, 0.25 * detail, seed + 23, &shade);
+    v *= 1.0 + contrast * 0.16 * repair * shade;
+    const double spots = Spots(q.s, q.t, fp, 1.3, 0.22 * detail, 0.04, 0.16, seed + 29);
+    v *= 1.0 - contrast * 0.3 * spots;
     const double crack = Cracks(q.s, q.t, fp, 0.22, 0.015, seed + 31);
     const double crack_density = SmoothStep(0.55 - 0.12 * detail, 0.75 - 0.12 * detail,
                                             ValueNoise(q.s * 0.03, q.t * 0.1, seed + 37));

@@ -59,13 +59,18 @@ class WorldBuilder {
   StaticWorld Build() {
     Rng ribbon_rng = rng_.Fork(1);
     BuildRibbon(ribbon_rng);
-    Rng building_rng = rng_.Fork(2);
-    for (int side : {-1, 1}) BuildFrontage(side, building_rng);
-    Rng tree_rng = rng_.Fork(3);
-    BuildStreetFurniture(tree_rng);
-    Rng parked_rng = rng_.Fork(4);
+    // One generator per side and kind of object, each used in order of u: a longer
+    // sequence gets the same world at its start.
+    for (int side : {-1, 1}) {
+      Rng building_rng = rng_.Fork(10 + side);
+      BuildFrontage(side, building_rng);
+    }
+    BuildStreetFurniture();
     if (layout_.has_parking && options_.traffic.parked_fraction > 0.0) {
-      for (int side : {-1, 1}) BuildParkedCars(side, parked_rng);
+      for (int side : {-1, 1}) {
+        Rng parked_rng = rng_.Fork(20 + side);
+        BuildParkedCars(side, parked_rng);
+      }
     }
     Rng backdrop_rng = rng_.Fork(5);
     BuildBackdrop(backdrop_rng);
@@ -167,12 +172,25 @@ class WorldBuilder {
           const Point& a1 = current[k];
           const Point& b1 = current[k + 1];
           if (a0.l == b0.l && a0.h == b0.h) continue;  // an absent part (zero width)
-          auto at = [](const RoadFrame& f, const Point& p) {
-            return Eigen::Vector3d(f.point + p.l * f.lateral + p.h * f.normal);
+          // The surface twists where the bank or grade changes; narrow quads keep the mesh
+          // within a millimetre of it on the road.
+          const double max_width = a0.style->label == label::kRoad ? 1.0 : 3.0;
+          const int parts = static_cast<int>(
+              std::ceil(std::max(std::abs(b0.l - a0.l), std::abs(b1.l - a1.l)) / max_width));
+          auto at = [](const RoadFrame& f, const Point& a, const Point& b, double k) {
+            const double l = a.l + k * (b.l - a.l), h = a.h + k * (b.h - a.h);
+            return Eigen::Vector3d(f.point + l * f.lateral + h * f.normal);
           };
-          // Quad corners counter-clockwise seen from above / from the road.
-          mesh.AddQuad(at(previous_frame, a0), at(frame, a1), at(frame, b1), at(previous_frame, b0),
-                       {u0, a0.l}, {u, a1.l}, {u, b1.l}, {u0, b0.l}, *a0.style);
+          for (int j = 0; j < std::max(1, parts); ++j) {
+            const double k0 = static_cast<double>(j) / std::max(1, parts);
+            const double k1 = static_cast<double>(j + 1) / std::max(1, parts);
+            const double l00 = a0.l + k0 * (b0.l - a0.l), l01 = a0.l + k1 * (b0.l - a0.l);
+            const double l10 = a1.l + k0 * (b1.l - a1.l), l11 = a1.l + k1 * (b1.l - a1.l);
+            // Quad corners counter-clockwise seen from above / from the road.
+            mesh.AddQuad(at(previous_frame, a0, b0, k0), at(frame, a1, b1, k0),
+                         at(frame, a1, b1, k1), at(previous_frame, a0, b0, k1), {u0, l00}, {u, l10},
+                         {u, l11}, {u0, l01}, *a0.style);
+          }
         }
         if (layout_.has_median) {
           const double m = layout_.median_centre;
@@ -328,12 +346,13 @@ class WorldBuilder {
     }
   }
 
-  void BuildStreetFurniture(Rng& rng) {
+  void BuildStreetFurniture() {
     const SceneryOptions& scenery = options_.scenery;
     const RoadOptions& road = options_.road;
     // Street trees on the sidewalk (or the verge) near the kerb.
     if (scenery.tree_spacing > 0.0) {
       for (int side : {-1, 1}) {
+        Rng rng = rng_.Fork(30 + side);
         double offset;
         if (road.sidewalk_width >= 1.5) {
           offset = Edge(side) + 0.9;
@@ -352,6 +371,7 @@ class WorldBuilder {
       }
     }
     if (scenery.pole_spacing > 0.0) {
+      Rng rng = rng_.Fork(40);
       int side = -1;
       for (double u = u_begin_ + rng.Uniform(0.0, scenery.pole_spacing); u < u_end_;
            u += scenery.pole_spacing * rng.Uniform(0.85, 1.15)) {
@@ -365,6 +385,7 @@ class WorldBuilder {
         AddStreetLight(ChunkAt(u), Ground(frame, l), axes, rng.Uniform(6.0, 8.0));
         if (options_.scenery.building_fraction > 0.0) side = -side;
       }
+      rng = rng_.Fork(41);
       for (double u = u_begin_ + rng.Uniform(20.0, 80.0); u < u_end_;
            u += rng.Uniform(50.0, 150.0)) {
         const RoadFrame frame = line_.FrameAt(u);
@@ -418,19 +439,19 @@ class WorldBuilder {
     const double rate = options_.scenery.backdrop_trees;
     if (rate <= 0.0) return;
     for (int side : {-1, 1}) {
-      const int count = static_cast<int>(rate * (u_end_ - u_begin_) / 100.0);
-      for (int k = 0; k < count; ++k) {
-        const double u = rng.Uniform(u_begin_, u_end_);
+      Rng side_rng = rng.Fork(side + 2);
+      for (double u = u_begin_ + side_rng.Uniform(0.0, 200.0 / rate); u < u_end_;
+           u += side_rng.Uniform(0.0, 200.0 / rate)) {
         const double reach =
             index_.Reach(u, side, Outer(side), Outer(side) + options_.road.ground_width);
-        const double height = rng.Uniform(8.0, 16.0);
-        const double radius = rng.Uniform(2.5, 5.0);
+        const double height = side_rng.Uniform(8.0, 16.0);
+        const double radius = side_rng.Uniform(2.5, 5.0);
         if (reach < Outer(side) + 4.0 + radius) continue;
-        const double l = side * (reach - rng.Uniform(0.0, 4.0));
+        const double l = side * (reach - side_rng.Uniform(0.0, 4.0));
         const RoadFrame frame = line_.FrameAt(u);
         const Eigen::Vector3d base = Ground(frame, l);
         if (!Clear(base, radius)) continue;
-        AddTreeAt(u, l, base, height, radius, rng);
+        AddTreeAt(u, l, base, height, radius, side_rng);
       }
     }
   }

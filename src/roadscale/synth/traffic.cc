@@ -69,7 +69,8 @@ Traffic::Traffic(const SceneOptions& options, const CentreLine& line, const Late
         std::round(traffic.overtaking_per_km * std::max(distance, 200.0) / 1000.0));
     for (int i = 0; i < count; ++i) {
       Car car = make_car(Kind::kOvertaking);
-      car.t0 = rng.Uniform(0.0, duration);
+      // Early enough that the pass is seen.
+      car.t0 = rng.Uniform(0.0, std::max(0.0, duration - 6.0));
       const double ego_speed = (ego.PositionAt(car.t0 + 1.0) - ego.PositionAt(car.t0));
       car.speed = ego_speed + rng.Uniform(4.0, 8.0);
       car.u0 = ego.PositionAt(car.t0) - 30.0;
