@@ -254,6 +254,10 @@ TEST(KittiOdometryMetric, RejectsMismatchedOrEmptyInput) {
         << e.what();
   }
   EXPECT_THROW(EvaluateKittiOdometry({}, {}), Error);
+  // Beyond float's range (3.4e38) the devkit's single precision cannot hold a pose.
+  std::vector<Rigid3d> huge = gt;
+  huge[3].translation().x() = 1e39;
+  EXPECT_THROW(EvaluateKittiOdometry(gt, huge), Error);
 }
 
 TEST(KittiOdometryMetric, OptionsAreChecked) {
