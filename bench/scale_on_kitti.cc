@@ -2,6 +2,12 @@
 // and the paper's ablations, on the shared KITTI 00 frames and on synthetic street pairs:
 //
 //   build/bench/roadscale_scale_on_kitti [--frames 200] [--synthetic-pairs 200] [--csv FILE]
+//       [--sequence SEQ_DIR --poses POSES_TXT] [--h0 1.65] [--min-parallax-deg D]
+//
+// --min-parallax-deg changes triangulation.min_parallax_deg in every configuration.
+// --sequence/--poses run any KITTI-layout sequence instead of the shared KITTI 00 frames (a
+// `roadscale synth` sequence, say); when it has a semantic/ folder (Cityscapes train ids, as
+// `synth` writes), its road label (0) gives a third mask, "semantic".
 //
 // KITTI: the rotation and the translation DIRECTION of each frame pair come from the ground
 // truth (poses/00.txt); tracks from a plain KLT (goodFeaturesToTrack + pyramidal Lucas-Kanade,
@@ -25,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -52,13 +59,16 @@ struct PairData {
   std::vector<Eigen::Vector2d> cur_pixels;
   Rigid3d cur_from_prev;  // translation of unit length
   double true_step = 0.0;
-  cv::Mat mask;  // the crude or synthetic road mask
+  cv::Mat mask;           // the crude corridor mask, or the synthetic pairs' road mask
+  cv::Mat semantic_mask;  // from the sequence's semantic labels (empty when it has none)
 };
+
+enum class MaskKind { kNone, kCorridor, kSemantic };
 
 struct Configuration {
   std::string name;
   std::function<void(ScaleEstimatorOptions*)> change;
-  bool use_mask = false;
+  MaskKind mask = MaskKind::kNone;
 };
 
 double Percentile(std::vector<double> values, double fraction) {
@@ -108,10 +118,12 @@ cv::Mat CorridorMask(const PinholeCamera& camera, double camera_height) {
   return mask;
 }
 
-std::vector<PairData> KittiPairs(int num_frames, PinholeCamera* camera) {
-  const std::filesystem::path root = SharedDataDir() / "kitti";
-  const Trajectory truth = ReadKittiTrajectory((root / "poses/00.txt").string());
-  const std::string image_dir = (root / "sequences/00/image_0").string();
+std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::string& poses,
+                                 int num_frames, double camera_height, PinholeCamera* camera) {
+  const Trajectory truth = ReadKittiTrajectory(poses);
+  const std::string image_dir = sequence_dir + "/image_0";
+  const std::string semantic_dir = sequence_dir + "/semantic";
+  const bool has_semantic = std::filesystem::is_directory(semantic_dir);
   std::vector<PairData> pairs;
   cv::Mat prev_image;
   for (int frame = 0; frame < num_frames && frame < static_cast<int>(truth.size()); ++frame) {
@@ -120,12 +132,18 @@ std::vector<PairData> KittiPairs(int num_frames, PinholeCamera* camera) {
     const cv::Mat image = cv::imread(image_dir + name, cv::IMREAD_GRAYSCALE);
     if (image.empty()) ThrowFileError(image_dir + name, "cannot read the image");
     if (frame == 0) {
-      *camera =
-          ReadKittiCamera((root / "sequences/00/calib.txt").string(), 0, image.cols, image.rows);
+      *camera = ReadKittiCamera(sequence_dir + "/calib.txt", 0, image.cols, image.rows);
       prev_image = image;
       continue;
     }
     PairData pair;
+    if (has_semantic) {
+      char previous[32];
+      std::snprintf(previous, sizeof(previous), "/%06d.png", frame - 1);
+      const cv::Mat labels = cv::imread(semantic_dir + previous, cv::IMREAD_UNCHANGED);
+      if (labels.empty()) ThrowFileError(semantic_dir + previous, "cannot read the labels");
+      pair.semantic_mask = labels == 0;
+    }
     const Rigid3d cur_from_prev =
         truth.world_from_cam[frame].inverse() * truth.world_from_cam[frame - 1];
     pair.true_step = cur_from_prev.translation().norm();
@@ -156,7 +174,7 @@ std::vector<PairData> KittiPairs(int num_frames, PinholeCamera* camera) {
     pairs.push_back(std::move(pair));
     prev_image = image;
   }
-  const cv::Mat corridor = CorridorMask(*camera, 1.65);
+  const cv::Mat corridor = CorridorMask(*camera, camera_height);
   for (PairData& pair : pairs) pair.mask = corridor;
   return pairs;
 }
@@ -202,8 +220,9 @@ struct Summary {
 
 Summary Run(const std::vector<PairData>& pairs, const PinholeCamera& camera,
             const Configuration& configuration, int first_counted, std::ofstream* csv,
-            const std::string& data_name) {
+            const std::string& data_name, double camera_height) {
   ScaleEstimatorOptions options;
+  options.camera_height = camera_height;
   configuration.change(&options);
   ScaleEstimator estimator(camera, options);
   Summary summary;
@@ -211,9 +230,11 @@ Summary Run(const std::vector<PairData>& pairs, const PinholeCamera& camera,
   for (size_t i = 0; i < pairs.size(); ++i) {
     const PairData& pair = pairs[i];
     const auto start = std::chrono::steady_clock::now();
+    const cv::Mat& mask = configuration.mask == MaskKind::kCorridor   ? pair.mask
+                          : configuration.mask == MaskKind::kSemantic ? pair.semantic_mask
+                                                                      : no_mask;
     const ScaleEstimate estimate =
-        estimator.Estimate(pair.prev_pixels, pair.cur_pixels, pair.cur_from_prev,
-                           configuration.use_mask ? pair.mask : no_mask);
+        estimator.Estimate(pair.prev_pixels, pair.cur_pixels, pair.cur_from_prev, mask);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     summary.ms.push_back(ms);
@@ -255,7 +276,8 @@ void PrintRow(const std::string& name, const Summary& summary) {
 
 void PrintTable(const std::string& title, const std::vector<PairData>& pairs,
                 const PinholeCamera& camera, const std::vector<Configuration>& configurations,
-                int first_counted, std::ofstream* csv, const std::string& data_name) {
+                int first_counted, std::ofstream* csv, const std::string& data_name,
+                double camera_height) {
   int tracks = 0;
   for (const PairData& pair : pairs) tracks += static_cast<int>(pair.prev_pixels.size());
   std::printf("\n%s (%zu frame pairs, %d tracks a pair on average, counted from pair %d)\n\n",
@@ -266,17 +288,23 @@ void PrintTable(const std::string& title, const std::vector<PairData>& pairs,
       "filt bias%% | len ratio | held | ms |\n",
       "configuration");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  const bool has_semantic = !pairs.empty() && !pairs.front().semantic_mask.empty();
   for (const Configuration& configuration : configurations) {
-    PrintRow(configuration.name, Run(pairs, camera, configuration, first_counted, csv, data_name));
+    if (configuration.mask == MaskKind::kSemantic && !has_semantic) continue;
+    PrintRow(configuration.name,
+             Run(pairs, camera, configuration, first_counted, csv, data_name, camera_height));
   }
 }
 
 std::vector<Configuration> Configurations() {
   using Options = ScaleEstimatorOptions;
   const auto none = [](Options*) {};
+  const auto beyond = [](Options* o) { o->min_angle_below_horizon_deg = 3.0; };
   std::vector<Configuration> list;
-  for (bool mask : {false, true}) {
-    const std::string suffix = mask ? ", mask" : "";
+  for (MaskKind mask : {MaskKind::kNone, MaskKind::kCorridor, MaskKind::kSemantic}) {
+    const std::string suffix = mask == MaskKind::kNone       ? ""
+                               : mask == MaskKind::kCorridor ? ", mask"
+                                                             : ", semantic";
     list.push_back({"paper default" + suffix, none, mask});
     list.push_back({"no selection (RANSAC only)" + suffix,
                     [](Options* o) {
@@ -285,28 +313,27 @@ std::vector<Configuration> Configurations() {
                     },
                     mask});
     list.push_back({"RM (no vote)" + suffix, [](Options* o) { o->use_depth_vote = false; }, mask});
+    list.push_back({"beyond: 3 deg below horizon" + suffix, beyond, mask});
   }
+  const MaskKind corridor = MaskKind::kCorridor;
   list.push_back({"vote per edge, mask",
                   [](Options* o) {
                     o->depth_vote.edge_visit = DepthConsistencyVoteOptions::EdgeVisit::kPerEdge;
                   },
-                  true});
-  list.push_back({"vote beta_a = 0, mask", [](Options* o) { o->depth_vote.min_vote = 0; }, true});
+                  corridor});
+  list.push_back(
+      {"vote beta_a = 0, mask", [](Options* o) { o->depth_vote.min_vote = 0; }, corridor});
   list.push_back(
       {"fixed camera pitch 0, mask",
        [](Options* o) { o->road_model.reference = RoadModelCheckOptions::Reference::kFixedPitch; },
-       true});
+       corridor});
   list.push_back({"filter sigma 3 + clamp 0.3, mask",
                   [](Options* o) {
                     o->filter.gaussian_sigma = 3.0;
                     o->filter.max_change_per_frame = 0.3;
                   },
-                  true});
-  list.push_back({"no filter, mask", [](Options* o) { o->use_filter = false; }, true});
-  list.push_back({"beyond: 3 deg below horizon, mask",
-                  [](Options* o) { o->min_angle_below_horizon_deg = 3.0; }, true});
-  list.push_back({"beyond: 3 deg below horizon",
-                  [](Options* o) { o->min_angle_below_horizon_deg = 3.0; }, false});
+                  corridor});
+  list.push_back({"no filter, mask", [](Options* o) { o->use_filter = false; }, corridor});
   return list;
 }
 
@@ -314,6 +341,12 @@ int Main(int argc, char** argv) {
   int frames = 200;
   int synthetic_pairs = 200;
   std::string csv_path;
+  const std::filesystem::path kitti = SharedDataDir() / "kitti";
+  std::string sequence_dir = (kitti / "sequences/00").string();
+  std::string poses = (kitti / "poses/00.txt").string();
+  bool own_sequence = false;
+  double camera_height = 1.65;
+  double min_parallax_deg = TriangulationOptions().min_parallax_deg;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (i + 1 >= argc) throw Error("option " + flag + " needs a value");
@@ -324,9 +357,19 @@ int Main(int argc, char** argv) {
       synthetic_pairs = std::stoi(value);
     } else if (flag == "--csv") {
       csv_path = value;
+    } else if (flag == "--sequence") {
+      sequence_dir = value;
+      own_sequence = true;
+    } else if (flag == "--poses") {
+      poses = value;
+    } else if (flag == "--h0") {
+      camera_height = std::stod(value);
+    } else if (flag == "--min-parallax-deg") {
+      min_parallax_deg = std::stod(value);
     } else {
       throw Error("unknown option " + flag +
-                  " (expected --frames N, --synthetic-pairs N or --csv FILE)");
+                  " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
+                  "--poses FILE, --h0 METRES or --min-parallax-deg D)");
     }
   }
   std::ofstream csv;
@@ -338,23 +381,36 @@ int Main(int argc, char** argv) {
            "plane_roll_deg,ms\n";
   }
   std::ofstream* csv_out = csv_path.empty() ? nullptr : &csv;
-  const std::vector<Configuration> configurations = Configurations();
+  std::vector<Configuration> configurations = Configurations();
+  for (Configuration& configuration : configurations) {
+    const auto change = configuration.change;
+    configuration.change = [change, min_parallax_deg](ScaleEstimatorOptions* options) {
+      options->triangulation.min_parallax_deg = min_parallax_deg;
+      change(options);
+    };
+  }
 
   if (synthetic_pairs > 0) {
     PrintTable("Synthetic street pairs", SyntheticPairs(synthetic_pairs), KittiOdometryCamera(),
-               configurations, 0, csv_out, "synthetic");
+               configurations, 0, csv_out, "synthetic", 1.65);
   }
   if (frames > 1) {
     PinholeCamera camera;
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<PairData> pairs = KittiPairs(frames, &camera);
-    std::printf("\nKLT tracking of %d KITTI frames: %.1f s\n", frames,
+    const std::vector<PairData> pairs =
+        KittiPairs(sequence_dir, poses, frames, camera_height, &camera);
+    std::printf("\nKLT tracking of %d frames of %s: %.1f s\n", frames, sequence_dir.c_str(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    PrintTable("KITTI 00, ground-truth motion direction", pairs, camera, configurations, 0, csv_out,
-               "kitti");
-    // Pairs 1-13: the ground truth's constant 0.860 m a frame while the car accelerates.
-    PrintTable("KITTI 00 without the ground truth's constant-speed pairs 1-13", pairs, camera,
-               configurations, 13, nullptr, "kitti");
+    PrintTable(own_sequence ? sequence_dir + ", ground-truth motion direction"
+                            : "KITTI 00, ground-truth motion direction",
+               pairs, camera, configurations, 0, csv_out, own_sequence ? "sequence" : "kitti",
+               camera_height);
+    // Pairs 1-13 of KITTI 00: the ground truth's constant 0.860 m a frame while the car
+    // accelerates.
+    if (!own_sequence) {
+      PrintTable("KITTI 00 without the ground truth's constant-speed pairs 1-13", pairs, camera,
+                 configurations, 13, nullptr, "kitti", camera_height);
+    }
   }
   return 0;
 }
