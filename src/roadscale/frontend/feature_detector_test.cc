@@ -1,0 +1,105 @@
+#include "roadscale/frontend/feature_detector.h"
+
+#include <map>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/frontend/frontend_test_util.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+std::map<std::pair<int, int>, int> CountPerCell(const std::vector<cv::Point2f>& points, int cell) {
+  std::map<std::pair<int, int>, int> count;
+  for (const cv::Point2f& p : points)
+    ++count[{static_cast<int>(p.x) / cell, static_cast<int>(p.y) / cell}];
+  return count;
+}
+
+TEST(FeatureDetector, EveryDetectorFindsSpreadFeatures) {
+  const cv::Mat image = testing::SyntheticTexture(400, 200);
+  for (const DetectorType type : {DetectorType::kSift, DetectorType::kOrb, DetectorType::kBrisk,
+                                  DetectorType::kAkaze, DetectorType::kFast}) {
+    FeatureDetectorOptions options;
+    options.type = type;
+    options.cell_size_px = 50;
+    options.max_per_cell = 3;
+    const std::vector<cv::Point2f> features = FeatureDetector(options).Detect(image, cv::Mat());
+    const auto count = CountPerCell(features, 50);
+    // 8 x 4 cells of texture: nearly all get features, none more than the cap.
+    EXPECT_GE(count.size(), 28u) << DetectorTypeName(type);
+    for (const auto& [cell, n] : count) EXPECT_LE(n, 3) << DetectorTypeName(type);
+    for (const cv::Point2f& p : features) {
+      EXPECT_GE(p.x, options.border_px);
+      EXPECT_GE(p.y, options.border_px);
+      EXPECT_LT(p.x, image.cols - options.border_px);
+      EXPECT_LT(p.y, image.rows - options.border_px);
+    }
+  }
+}
+
+TEST(FeatureDetector, RespectsTheMask) {
+  const cv::Mat image = testing::SyntheticTexture(300, 200);
+  cv::Mat mask(image.size(), CV_8UC1, cv::Scalar(0));
+  mask(cv::Rect(0, 100, 300, 100)).setTo(255);  // bottom half only
+  const std::vector<cv::Point2f> features = FeatureDetector({}).Detect(image, mask);
+  ASSERT_FALSE(features.empty());
+  for (const cv::Point2f& p : features) EXPECT_GE(p.y, 99.5f);
+}
+
+TEST(FeatureDetector, TopsUpAroundExistingPointsWithMinimumDistance) {
+  const cv::Mat image = testing::SyntheticTexture(300, 200);
+  FeatureDetectorOptions options;
+  options.cell_size_px = 100;
+  options.max_per_cell = 5;
+  options.min_distance_px = 12.0;
+  const FeatureDetector detector(options);
+  // Cell (0, 0) is full already; cell (1, 0) holds one point.
+  std::vector<cv::Point2f> existing = {{20, 20}, {40, 40}, {60, 60}, {80, 80}, {30, 70}, {150, 50}};
+  const std::vector<cv::Point2f> features = detector.Detect(image, cv::Mat(), existing);
+  std::vector<cv::Point2f> all = existing;
+  all.insert(all.end(), features.begin(), features.end());
+  const auto count = CountPerCell(all, 100);
+  EXPECT_EQ(count.at({0, 0}), 5);
+  EXPECT_EQ(count.at({1, 0}), 5);
+  for (size_t i = 0; i < features.size(); ++i) {
+    for (size_t j = 0; j < all.size(); ++j) {
+      if (existing.size() + i == j) continue;
+      EXPECT_GE(cv::norm(features[i] - all[j]), 12.0);
+    }
+  }
+}
+
+TEST(FeatureDetector, SkipsDetectionWhenEveryCellIsFull) {
+  const cv::Mat image = testing::SyntheticTexture(100, 100);
+  FeatureDetectorOptions options;
+  options.cell_size_px = 100;
+  options.max_per_cell = 1;
+  EXPECT_TRUE(FeatureDetector(options).Detect(image, cv::Mat(), {{50, 50}}).empty());
+}
+
+TEST(FeatureDetector, FlatImageHasNoFeatures) {
+  const cv::Mat image(120, 160, CV_8UC1, cv::Scalar(90));
+  EXPECT_TRUE(FeatureDetector({}).Detect(image, cv::Mat()).empty());
+}
+
+TEST(FeatureDetector, ParsesNamesAndRejectsBadInput) {
+  EXPECT_EQ(ParseDetectorType("sift"), DetectorType::kSift);
+  EXPECT_EQ(ParseDetectorType("akaze"), DetectorType::kAkaze);
+  for (const char* name : {"sift", "orb", "brisk", "akaze", "fast"}) {
+    EXPECT_EQ(DetectorTypeName(ParseDetectorType(name)), name);
+  }
+  EXPECT_THROW(ParseDetectorType("surf"), Error);
+  FeatureDetectorOptions bad;
+  bad.max_per_cell = 0;
+  EXPECT_THROW(bad.Check(), Error);
+  EXPECT_THROW(FeatureDetector{bad}, Error);
+  const FeatureDetector detector({});
+  EXPECT_THROW(detector.Detect(cv::Mat(50, 50, CV_8UC3), cv::Mat()), Error);
+  EXPECT_THROW(detector.Detect(cv::Mat(50, 50, CV_8UC1), cv::Mat(40, 50, CV_8UC1)), Error);
+}
+
+}  // namespace
+}  // namespace roadscale

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "roadscale/frontend/feature_tracker.h"
+#include "roadscale/frontend/two_view_motion.h"
+#include "roadscale/geometry/pinhole_camera.h"
+
+namespace roadscale {
+
+struct FrontendOptions {
+  FeatureTrackerOptions tracker;
+  TwoViewMotionOptions motion;
+  // Start KLT where the previous frame's rotation moves each point (the infinite homography
+  // K R K^-1): in a sharp turn the image shifts by tens of pixels, which the constant-position
+  // guess leaves to the coarse pyramid levels.
+  bool predict_with_rotation = true;
+  // End the tracks that the essential matrix rejects (moving objects, KLT drift), so that
+  // they neither reach the scale stage nor occupy grid cells at the next re-detection. Only
+  // done for kOk frames: a degenerate frame's inlier set says nothing about a track.
+  bool drop_outliers = true;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+// Everything the frontend measured in one frame.
+struct FrontendFrame {
+  int frame_index = 0;
+  // Tracks seen in both the previous and this frame, before outliers were dropped.
+  std::vector<Correspondence> correspondences;
+  TwoViewMotion motion;
+  TrackerFrameStats tracker;  // counts, and the pyramid/tracking/detection times
+  double motion_ms = 0.0;
+  int num_tracks = 0;  // live tracks after outlier removal and re-detection
+};
+
+// The monocular frontend (the paper's "MonoVO" host): features on a grid, KLT tracking and
+// the two-view motion of every frame. Frames must come in order.
+class MonoFrontend {
+ public:
+  // Throws Error on invalid options or camera.
+  MonoFrontend(const PinholeCamera& camera, const FrontendOptions& options);
+
+  // Processes the next frame: `image` grey CV_8UC1 of the camera's size; `detection_mask`
+  // where new features may start (non-zero = allowed; empty = whole image); `dynamic_mask`
+  // where tracks are dropped (non-zero = moving object; empty = none). Throws Error on a bad
+  // image or mask.
+  FrontendFrame ProcessFrame(int frame_index, const cv::Mat& image,
+                             const cv::Mat& detection_mask = cv::Mat(),
+                             const cv::Mat& dynamic_mask = cv::Mat());
+
+  // The live tracks after the last frame, with their pixel histories.
+  const std::vector<Track>& tracks() const { return tracker_.tracks(); }
+  const PinholeCamera& camera() const { return camera_; }
+  const FrontendOptions& options() const { return options_; }
+
+ private:
+  PinholeCamera camera_;
+  FrontendOptions options_;
+  FeatureTracker tracker_;
+  Eigen::Matrix3d last_rotation_ = Eigen::Matrix3d::Identity();
+};
+
+}  // namespace roadscale
