@@ -11,6 +11,9 @@ namespace roadscale::cli {
 // `roadscale eval`: KITTI devkit metric, ATE, RPE and drift of an estimated trajectory.
 void RegisterEvalCommand(CLI::App& app);
 
+// `roadscale run`: the visual odometry on a sequence, poses written while it runs.
+void RegisterRunCommand(CLI::App& app);
+
 // `roadscale segment`: label images and overlays from a segmentation model.
 void RegisterSegmentCommand(CLI::App& app);
 

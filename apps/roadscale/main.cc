@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", ROADSCALE_VERSION);
   app.require_subcommand(1);
   roadscale::cli::RegisterEvalCommand(app);
+  roadscale::cli::RegisterRunCommand(app);
   roadscale::cli::RegisterSegmentCommand(app);
   roadscale::cli::RegisterSynthCommand(app);
 

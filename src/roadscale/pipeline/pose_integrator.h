@@ -1,0 +1,52 @@
+#pragma once
+
+#include <string>
+
+#include "roadscale/frontend/two_view_motion.h"
+#include "roadscale/geometry/rigid3.h"
+#include "roadscale/pipeline/scale_source.h"
+
+namespace roadscale {
+
+// How a frame's pose follows from the previous frame's.
+enum class PoseUpdate {
+  kFirst,             // the first frame: world = this camera
+  kMotion,            // the measured rotation and direction, with the scale source's length
+  kKept,              // stationary: the pose of the previous frame
+  kRotationOnly,      // pure rotation: the measured rotation, the last measured direction
+  kConstantVelocity,  // no usable estimate: the last applied step again (direction and
+                      // rotation), with this step's length
+};
+
+// "first", "motion", "kept", "rotation_only", "constant_velocity".
+std::string PoseUpdateName(PoseUpdate update);
+
+// Chains the per-frame motions into world_from_cam poses:
+// world_from_cam[t] = world_from_cam[t-1] * inverse(cur_from_prev[t]).
+//
+// The step length comes from the scale source; when it has none for a step, the last valid
+// length is used (and 0 before any). The degenerate frames are handled as the frontend's
+// status asks: a stationary frame keeps the pose (a stop must not drift); a pure rotation
+// turns the camera and keeps moving along the last measured direction (a car turning slowly
+// still moves forward, and its direction in the camera frame changes little from one frame
+// to the next); a frame without an estimate repeats the last step.
+class PoseIntegrator {
+ public:
+  // Applies one frame. `motion.status == kFirstFrame` (re)starts the trajectory at identity.
+  PoseUpdate Apply(const TwoViewMotion& motion, const ScaleResult& scale);
+
+  const Rigid3d& world_from_cam() const { return world_from_cam_; }
+  // The step applied by the last Apply.
+  const Rigid3d& cur_from_prev() const { return cur_from_prev_; }
+  // The length of the last step (metres).
+  double step_length() const { return cur_from_prev_.translation().norm(); }
+
+ private:
+  Rigid3d world_from_cam_ = Rigid3d::Identity();
+  Rigid3d cur_from_prev_ = Rigid3d::Identity();
+  Eigen::Matrix3d last_rotation_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d last_direction_ = Eigen::Vector3d::Zero();
+  double last_length_ = 0.0;
+};
+
+}  // namespace roadscale

@@ -1,0 +1,180 @@
+#include "roadscale/pipeline/sequential_pipeline.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <system_error>
+
+#include <opencv2/imgproc.hpp>
+
+#include "roadscale/io/trajectory_io.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MillisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::ofstream OpenOutput(const std::string& path) {
+  std::ofstream file(path, std::ios::out | std::ios::trunc);
+  if (!file) ThrowFileError(path, "cannot create the file");
+  return file;
+}
+
+void WriteLine(std::ofstream& file, const std::string& path, const std::string& line) {
+  file << line << '\n';
+  file.flush();
+  if (!file) ThrowFileError(path, "write failed (disk full or file removed?)");
+}
+
+}  // namespace
+
+void PipelineOptions::Check() const { frontend.Check(); }
+
+std::string FrameRecordCsvHeader() {
+  return "index,timestamp,motion_status,pose_update,tracks,correspondences,inliers,detected,"
+         "inlier_ratio,flow_px,parallax_px,scale_valid,step_length_m,scale_status,load_ms,"
+         "tracking_ms,detection_ms,motion_ms,scale_ms,total_ms";
+}
+
+std::string FormatFrameRecordCsv(const FrameRecord& r) {
+  std::ostringstream out;
+  out << r.index << ',' << std::setprecision(17) << r.timestamp << ',' << std::setprecision(6)
+      << MotionStatusName(r.motion_status) << ',' << PoseUpdateName(r.pose_update) << ','
+      << r.num_tracks << ',' << r.num_correspondences << ',' << r.num_inliers << ','
+      << r.num_detected << ',' << r.inlier_ratio << ',' << r.flow_px << ',' << r.parallax_px << ','
+      << (r.scale_valid ? 1 : 0) << ',' << std::setprecision(9) << r.step_length_m << ','
+      << std::setprecision(6) << '"' << r.scale_status << '"' << ',' << r.load_ms << ','
+      << r.tracking_ms << ',' << r.detection_ms << ',' << r.motion_ms << ',' << r.scale_ms << ','
+      << r.total_ms;
+  return out.str();
+}
+
+SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& scale,
+                                       const PipelineOptions& options, const std::string& out_dir)
+    : scale_(scale), frontend_(camera.camera, options.frontend) {
+  options.Check();
+  std::error_code error;
+  std::filesystem::create_directories(out_dir, error);
+  if (error || !std::filesystem::is_directory(out_dir)) {
+    ThrowFileError(out_dir, "cannot create the output folder" +
+                                (error ? " (" + error.message() + ")" : std::string()));
+  }
+  poses_path_ = (std::filesystem::path(out_dir) / "poses_kitti.txt").string();
+  records_path_ = (std::filesystem::path(out_dir) / "frames.csv").string();
+  poses_ = OpenOutput(poses_path_);
+  records_ = OpenOutput(records_path_);
+  WriteLine(records_, records_path_, FrameRecordCsvHeader());
+}
+
+FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms) {
+  const Clock::time_point start = Clock::now();
+  FrameRecord record;
+  record.index = frame.index;
+  record.timestamp = frame.timestamp;
+  record.load_ms = load_ms;
+
+  cv::Mat grey = frame.image;
+  if (grey.channels() == 3) cv::cvtColor(frame.image, grey, cv::COLOR_BGR2GRAY);
+  const FrontendFrame result = frontend_.ProcessFrame(static_cast<int>(frame.index), grey);
+  record.motion_status = result.motion.status;
+  record.num_tracks = result.num_tracks;
+  record.num_correspondences = static_cast<int>(result.correspondences.size());
+  record.num_inliers = result.motion.num_inliers;
+  record.num_detected = result.tracker.detected;
+  record.inlier_ratio = result.motion.inlier_ratio;
+  record.flow_px = result.motion.flow_px;
+  record.parallax_px = result.motion.parallax_px;
+  record.tracking_ms = result.tracker.pyramid_ms + result.tracker.tracking_ms;
+  record.detection_ms = result.tracker.detection_ms;
+  record.motion_ms = result.motion_ms;
+
+  ScaleResult scale;
+  if (result.motion.status != MotionStatus::kFirstFrame) {
+    const Clock::time_point scale_start = Clock::now();
+    ScaleQuery query;
+    query.frame_index = frame.index;
+    query.position = position_;
+    query.frontend = &result;
+    scale = scale_.StepLength(query);
+    record.scale_ms = MillisecondsSince(scale_start);
+  }
+  record.scale_valid = scale.valid;
+  record.scale_status = scale.status;
+  record.pose_update = integrator_.Apply(result.motion, scale);
+  record.step_length_m = integrator_.step_length();
+
+  WriteLine(poses_, poses_path_, FormatKittiRow(integrator_.world_from_cam()));
+  record.total_ms = MillisecondsSince(start) + load_ms;
+  WriteLine(records_, records_path_, FormatFrameRecordCsv(record));
+  ++position_;
+  return record;
+}
+
+void RunSummary::Add(const FrameRecord& record) {
+  const double n = static_cast<double>(frames);
+  const auto update_mean = [&](double* mean, double value) {
+    *mean = (*mean * n + value) / (n + 1);
+  };
+  update_mean(&mean_load_ms, record.load_ms);
+  update_mean(&mean_tracking_ms, record.tracking_ms);
+  update_mean(&mean_detection_ms, record.detection_ms);
+  update_mean(&mean_motion_ms, record.motion_ms);
+  update_mean(&mean_scale_ms, record.scale_ms);
+  update_mean(&mean_total_ms, record.total_ms);
+  ++frames;
+  switch (record.pose_update) {
+    case PoseUpdate::kMotion:
+      ++motion_frames;
+      break;
+    case PoseUpdate::kKept:
+      ++kept_frames;
+      break;
+    case PoseUpdate::kRotationOnly:
+      ++rotation_only_frames;
+      break;
+    case PoseUpdate::kConstantVelocity:
+      ++constant_velocity_frames;
+      break;
+    case PoseUpdate::kFirst:
+      break;
+  }
+  if (record.num_detected > 0) ++detection_frames;
+}
+
+std::string RunSummary::Format() const {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1);
+  out << "Frames: " << frames << " (motion " << motion_frames << ", kept (stationary) "
+      << kept_frames << ", rotation only " << rotation_only_frames << ", constant velocity "
+      << constant_velocity_frames << "; re-detection in " << detection_frames << ")\n";
+  out << "Mean ms per frame: load " << mean_load_ms << ", tracking " << mean_tracking_ms
+      << ", detection " << mean_detection_ms << ", motion " << mean_motion_ms << ", scale "
+      << mean_scale_ms << ", total " << mean_total_ms;
+  if (mean_total_ms > 0.0) out << " (" << 1000.0 / mean_total_ms << " Hz)";
+  out << '\n';
+  return out.str();
+}
+
+RunSummary RunSequentialPipeline(FrameSource& source, ScaleSource& scale,
+                                 const PipelineOptions& options, const std::string& out_dir,
+                                 const std::function<void(const FrameRecord&)>& on_frame) {
+  SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
+  RunSummary summary;
+  Frame frame;
+  while (true) {
+    const Clock::time_point load_start = Clock::now();
+    if (!source.Next(&frame)) break;
+    const FrameRecord record = pipeline.ProcessFrame(frame, MillisecondsSince(load_start));
+    summary.Add(record);
+    if (on_frame) on_frame(record);
+  }
+  return summary;
+}
+
+}  // namespace roadscale

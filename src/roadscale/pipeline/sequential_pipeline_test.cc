@@ -1,0 +1,45 @@
+#include "roadscale/pipeline/sequential_pipeline.h"
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+std::vector<std::string> ReadLines(const std::string& path) {
+  std::ifstream file(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(SequentialPipeline, FrameRecordCsvHasOneFieldPerHeaderColumn) {
+  FrameRecord record;
+  record.scale_status = "oracle";
+  const auto count = [](const std::string& text) {
+    return std::count(text.begin(), text.end(), ',');
+  };
+  EXPECT_EQ(count(FrameRecordCsvHeader()), count(FormatFrameRecordCsv(record)));
+}
+
+TEST(SequentialPipeline, RejectsAnOutputFolderThatCannotBeCreated) {
+  testing::TempDir dir;
+  const std::string blocker = testing::WriteTextFile(dir.File("file"), "x");
+  CameraSetup camera;
+  camera.camera = KittiOdometryCamera();
+  struct NoScale : ScaleSource {
+    std::string Name() const override { return "none"; }
+    ScaleResult StepLength(const ScaleQuery&) override { return {}; }
+  } scale;
+  EXPECT_THROW([&] { SequentialPipeline pipeline(camera, scale, {}, blocker + "/out"); }(), Error);
+}
+
+}  // namespace
+}  // namespace roadscale
