@@ -5,6 +5,9 @@
 //       [--sequence SEQ_DIR --poses POSES_TXT] [--h0 1.65] [--min-parallax-deg D]
 //
 // --min-parallax-deg changes triangulation.min_parallax_deg in every configuration.
+// --segmentation-model YAML (e.g. config/models/espnetv2_512x256.yaml, from the repository
+// root) segments each previous frame and uses the network's road mask as the "semantic" mask
+// when the sequence has no semantic/ folder.
 // --sequence/--poses run any KITTI-layout sequence instead of the shared KITTI 00 frames (a
 // `roadscale synth` sequence, say); when it has a semantic/ folder (Cityscapes train ids, as
 // `synth` writes), its road label (0) gives a third mask, "semantic".
@@ -34,6 +37,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -47,6 +51,7 @@
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/scale/scale_estimator.h"
 #include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/shared_data.h"
 
@@ -119,11 +124,18 @@ cv::Mat CorridorMask(const PinholeCamera& camera, double camera_height) {
 }
 
 std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::string& poses,
-                                 int num_frames, double camera_height, PinholeCamera* camera) {
+                                 int num_frames, double camera_height,
+                                 const std::string& segmentation_model, PinholeCamera* camera) {
   const Trajectory truth = ReadKittiTrajectory(poses);
   const std::string image_dir = sequence_dir + "/image_0";
   const std::string semantic_dir = sequence_dir + "/semantic";
   const bool has_semantic = std::filesystem::is_directory(semantic_dir);
+  std::unique_ptr<Segmenter> segmenter;
+  if (!has_semantic && !segmentation_model.empty()) {
+    SegmentationOptions segmentation;
+    segmentation.model = segmentation_model;
+    segmenter = MakeSegmenter(segmentation);
+  }
   std::vector<PairData> pairs;
   cv::Mat prev_image;
   for (int frame = 0; frame < num_frames && frame < static_cast<int>(truth.size()); ++frame) {
@@ -143,6 +155,10 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
       const cv::Mat labels = cv::imread(semantic_dir + previous, cv::IMREAD_UNCHANGED);
       if (labels.empty()) ThrowFileError(semantic_dir + previous, "cannot read the labels");
       pair.semantic_mask = labels == 0;
+    } else if (segmenter) {
+      char previous[32];
+      std::snprintf(previous, sizeof(previous), "%06d", frame - 1);
+      pair.semantic_mask = segmenter->Segment(prev_image, previous).road_mask;
     }
     const Rigid3d cur_from_prev =
         truth.world_from_cam[frame].inverse() * truth.world_from_cam[frame - 1];
@@ -347,6 +363,7 @@ int Main(int argc, char** argv) {
   bool own_sequence = false;
   double camera_height = 1.65;
   double min_parallax_deg = TriangulationOptions().min_parallax_deg;
+  std::string segmentation_model;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (i + 1 >= argc) throw Error("option " + flag + " needs a value");
@@ -366,10 +383,12 @@ int Main(int argc, char** argv) {
       camera_height = std::stod(value);
     } else if (flag == "--min-parallax-deg") {
       min_parallax_deg = std::stod(value);
+    } else if (flag == "--segmentation-model") {
+      segmentation_model = value;
     } else {
       throw Error("unknown option " + flag +
                   " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
-                  "--poses FILE, --h0 METRES or --min-parallax-deg D)");
+                  "--poses FILE, --h0 METRES, --min-parallax-deg D or --segmentation-model YAML)");
     }
   }
   std::ofstream csv;
@@ -398,7 +417,7 @@ int Main(int argc, char** argv) {
     PinholeCamera camera;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<PairData> pairs =
-        KittiPairs(sequence_dir, poses, frames, camera_height, &camera);
+        KittiPairs(sequence_dir, poses, frames, camera_height, segmentation_model, &camera);
     std::printf("\nKLT tracking of %d frames of %s: %.1f s\n", frames, sequence_dir.c_str(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     PrintTable(own_sequence ? sequence_dir + ", ground-truth motion direction"
