@@ -89,8 +89,8 @@ double Repairs(const TexelQuery& q, double cell_s, double cell_t, double density
   const double s0 = ci * cell_s + (cell_s - length) * unit(3);
   const double t0 = cj * cell_t + (cell_t - width) * unit(4);
   *shade = 2.0 * unit(5) - 1.0;
-  return FilteredPulse(q.s, 1e9, length, s0, q.footprint_s) *
-         FilteredPulse(q.t, 1e9, width, t0, q.footprint_t);
+  return FilteredBox(q.s, s0, s0 + length, q.footprint_s) *
+         FilteredBox(q.t, t0, t0 + width, q.footprint_t);
 }
 
 Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
@@ -102,16 +102,22 @@ Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
   // asphalt does in a camera image.
   const double stains = FilteredFbm(q.s, q.t, fp, 0.05, 3, 0.5, seed);
   const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 3, 0.6, seed + 5);
-  const double grain = FilteredFbm(q.s, q.t, fp, 4.0, 5, 0.85, seed + 11);
-  double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 0.35 * grain);
+  const double grain = FilteredFbm(q.s, q.t, fp, 3.0, 6, 0.85, seed + 11);
+  double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 0.6 * grain);
   // Detail that gives the road its few, strong corners: repairs, spots, cracks.
   const double detail = options.road_detail;
   if (detail > 0.0) {
     double shade = 0.0;
     const double repair = Repairs(q, 9.0, 3.5, 0.25 * detail, seed + 23, &shade);
     v *= 1.0 + contrast * 0.16 * repair * shade;
-    const double spots = Spots(q.s, q.t, fp, 1.3, 0.22 * detail, 0.04, 0.16, seed + 29);
+    const double spots = Spots(q.s, q.t, fp, 1.0, 0.45 * detail, 0.03, 0.12, seed + 29);
     v *= 1.0 - contrast * 0.3 * spots;
+    // Gravel specks, light and dark: the texture a camera resolves near the car.
+    const double specks = Spots(q.s, q.t, fp, 0.2, 0.35 * detail, 0.008, 0.025, seed + 43);
+    if (specks > 0.0) {
+      const double sign = ValueNoise(q.s * 5.0, q.t * 5.0, seed + 47) < 0.5 ? -1.0 : 1.0;
+      v *= 1.0 + contrast * 0.45 * sign * specks;
+    }
     const double crack = Cracks(q.s, q.t, fp, 0.22, 0.015, seed + 31);
     const double crack_density = SmoothStep(0.55 - 0.12 * detail, 0.75 - 0.12 * detail,
                                             ValueNoise(q.s * 0.03, q.t * 0.1, seed + 37));
@@ -121,7 +127,7 @@ Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
   // Lane markings: box-filtered across and along the road.
   for (const LaneMarking& m : context.markings) {
     if (std::abs(q.t - m.l) > m.width + q.footprint_t) continue;
-    double cover = FilteredPulse(q.t, 1e6, m.width, m.l - 0.5 * m.width, q.footprint_t);
+    double cover = FilteredBox(q.t, m.l - 0.5 * m.width, m.l + 0.5 * m.width, q.footprint_t);
     if (m.gap > 0.0) cover *= FilteredPulse(q.s, m.dash + m.gap, m.dash, 0.0, q.footprint_s);
     const double wear = 0.8 + 0.2 * FilteredFbm(q.s, q.t, fp, 3.0, 3, 0.6, seed + 41);
     colour = Mix(colour, Grey(0.78 * wear), cover);
@@ -146,6 +152,45 @@ Rgb Paving(const SurfaceStyle& style, const TexelQuery& q, const TextureContext&
   return Scale(style.tint, v);
 }
 
+Rgb Brick(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context);
+
+// One window of a facade at local coordinates (x, y) from its lower left corner, size
+// (w, h): glass with a mullion and a transom, curtains or blinds behind it. Returns the
+// colour to blend over the wall and its coverage.
+double WindowPane(const TexelQuery& q, double x, double y, double w, double h, uint32_t cell,
+                  double contrast, Rgb* colour) {
+  const double fs = q.footprint_s, ft = q.footprint_t;
+  auto inside = [&](double a0, double a1, double b0, double b1) {
+    return FilteredBox(x, a0, a1, fs) * FilteredBox(y, b0, b1, ft);
+  };
+  const double cover = inside(-0.08, w + 0.08, -0.08, h + 0.08);
+  if (cover <= 0.0) return 0.0;
+  auto unit = [&](uint32_t k) { return (Hash32(cell * 0x27d4eb2dU + k) >> 8) / 16777216.0; };
+  // Glass: dark, with the sky's reflection brighter towards the top.
+  double v = 0.08 + 0.18 * unit(1) + 0.12 * std::clamp(y / h, 0.0, 1.0);
+  // Curtains on one side, or a blind pulled part way down, in some windows.
+  const double curtain = unit(2);
+  if (curtain < 0.35) {
+    const double left = unit(3) < 0.5 ? 1.0 : 0.0;
+    const double width = w * (0.2 + 0.25 * unit(4));
+    const double c = left > 0.0 ? inside(0.0, width, 0.0, h) : inside(w - width, w, 0.0, h);
+    v += (0.45 + 0.3 * unit(5) - v) * c;
+  } else if (curtain < 0.55) {
+    const double down = h * (0.15 + 0.6 * unit(6));
+    const double slats = FilteredPulse(y, 0.05, 0.035, 0.0, ft);
+    v += (0.5 + 0.15 * slats - v) * inside(0.0, w, h - down, h);
+  }
+  // Mullion, transom, frame, sill.
+  const double frame = 1.0 - inside(0.0, w, 0.0, h);
+  const double bars = std::max(inside(0.5 * w - 0.03, 0.5 * w + 0.03, 0.0, h),
+                               inside(0.0, w, 0.68 * h - 0.03, 0.68 * h + 0.03));
+  const double light = 0.82 + 0.1 * unit(7);
+  v += (light - v) * std::max(frame, bars);
+  const double sill = inside(-0.12, w + 0.12, -0.14, -0.06);
+  *colour = Grey(std::clamp(1.0 + contrast * (v - 1.0), 0.0, 1.0));
+  return std::max(cover, sill) * std::min(1.0, contrast);
+}
+
 Rgb Facade(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
   const double contrast = context.options.facade_contrast;
   const uint32_t v = style.variant;
@@ -159,39 +204,44 @@ Rgb Facade(const SurfaceStyle& style, const TexelQuery& q, const TextureContext&
   const double offset_s = spacing * VariantUnit(v, 6);
   const uint32_t seed = context.seed ^ 0xfacau ^ v;
 
-  const double plaster = 1.0 + contrast * (0.25 * FilteredFbm(q.s, q.t, fp, 0.4, 6, 0.55, seed));
-  Rgb colour = Scale(style.tint, plaster);
+  // The wall: brick on some buildings, plaster with grime and fine grain on the others.
+  Rgb colour;
+  if (VariantUnit(v, 9) < 0.25) {
+    colour = Brick(style, q, context);
+  } else {
+    const double grime = FilteredFbm(q.s, q.t, fp, 0.3, 4, 0.55, seed);
+    const double grain = FilteredFbm(q.s, q.t, fp, 6.0, 4, 0.8, seed + 3);
+    colour = Scale(style.tint, 1.0 + contrast * (0.2 * grime + 0.12 * grain));
+  }
   // A dark plinth and a cornice line per floor.
-  const double plinth = FilteredPulse(q.t, 1e6, 0.6, -0.3, q.footprint_t);
+  const double plinth = FilteredBox(q.t, -0.3, 0.3, q.footprint_t);
   colour = Scale(colour, 1.0 - contrast * 0.25 * plinth);
   const double cornice =
       FilteredPulse(q.t, floor_height, 0.15, ground_floor - 0.15, q.footprint_t) *
       (q.t > ground_floor - 0.3 ? 1.0 : 0.0);
   colour = Scale(colour, 1.0 + contrast * 0.12 * cornice);
 
-  double window = 0.0;
-  double frame = 0.0;
   if (q.t > ground_floor) {
+    // Upper floors: a grid of windows.
     const double t0 = ground_floor + sill;
-    window = FilteredGrid(q, spacing, window_w, offset_s, floor_height, window_h, t0);
-    frame = FilteredGrid(q, spacing, window_w + 0.16, offset_s - 0.08, floor_height,
-                         window_h + 0.16, t0 - 0.08);
+    const int64_t cs = CellIndex(q.s, spacing, offset_s - 0.5 * (spacing - window_w));
+    const int64_t ct = CellIndex(q.t, floor_height, t0 - 0.5 * (floor_height - window_h));
+    const double x = q.s - (offset_s + cs * spacing);
+    const double y = q.t - (t0 + ct * floor_height);
+    Rgb pane;
+    const uint32_t cell = Hash3(static_cast<int32_t>(cs), static_cast<int32_t>(ct), seed);
+    const double k = WindowPane(q, x, y, window_w, window_h, cell, contrast, &pane);
+    colour = Mix(colour, pane, k);
   } else if (q.t > 0.0) {
-    // Ground floor: wide shop windows or doors.
+    // Ground floor: wide shop windows and doors.
     const double shop_w = 1.2 + 2.0 * VariantUnit(v, 7);
     const double period = shop_w + 0.8 + 1.5 * VariantUnit(v, 8);
-    window = FilteredPulse(q.s, period, shop_w, offset_s, q.footprint_s) *
-             FilteredPulse(q.t, 1e6, ground_floor - 0.9, 0.5, q.footprint_t);
-    frame = window;
-  }
-  if (frame > 0.0) {
-    // Frames light, glass dark with a sky reflection that brightens upward.
-    colour = Mix(colour, Grey(0.85), contrast * 0.6 * (frame - window));
-    const int64_t cs = CellIndex(q.s, spacing, offset_s);
-    const int64_t ct = CellIndex(q.t, floor_height, 0.0);
-    const double shade = HashUnit(static_cast<int32_t>(cs), static_cast<int32_t>(ct), seed);
-    const double glass = 0.10 + 0.22 * shade;
-    colour = Mix(colour, Grey(glass), std::min(1.0, contrast) * window);
+    const int64_t cs = CellIndex(q.s, period, offset_s - 0.4);
+    const double x = q.s - (offset_s + cs * period);
+    Rgb pane;
+    const uint32_t cell = Hash3(static_cast<int32_t>(cs), -1, seed);
+    const double k = WindowPane(q, x, q.t - 0.5, shop_w, ground_floor - 0.9, cell, contrast, &pane);
+    colour = Mix(colour, pane, k);
   }
   return colour;
 }
@@ -224,8 +274,8 @@ Rgb Concrete(const SurfaceStyle& style, const TexelQuery& q, const TextureContex
 
 Rgb Fence(const SurfaceStyle& style, const TexelQuery& q) {
   const double slat = FilteredPulse(q.s, 0.14, 0.09, 0.0, q.footprint_s);
-  const double rail = FilteredPulse(q.t, 1e6, 0.08, 0.25, q.footprint_t) +
-                      FilteredPulse(q.t, 1e6, 0.08, 1.1, q.footprint_t);
+  const double rail =
+      FilteredBox(q.t, 0.25, 0.33, q.footprint_t) + FilteredBox(q.t, 1.1, 1.18, q.footprint_t);
   const double solid = std::min(1.0, slat + rail);
   return Mix(Grey(0.12), style.tint, solid);
 }
@@ -260,7 +310,7 @@ Rgb CarPaint(const SurfaceStyle& style, const TexelQuery& q) {
   const double fp = std::max(q.footprint_s, q.footprint_t);
   // Door seams and a darker sill.
   const double seams = 1.0 - FilteredPulse(q.s, 1.1, 1.08, 0.3, q.footprint_s);
-  const double sill = FilteredPulse(q.t, 1e6, 0.25, -1.0, q.footprint_t);
+  const double sill = FilteredBox(q.t, -1.0, -0.75, q.footprint_t);
   const double n = FilteredFbm(q.s, q.t, fp, 1.0, 3, 0.5, style.variant);
   Rgb colour = Scale(style.tint, (1.0 + 0.1 * n) * (1.0 - 0.5 * seams));
   return Mix(colour, Grey(0.1), 0.7 * sill);
@@ -274,8 +324,8 @@ Rgb CarGlass(const SurfaceStyle& style, const TexelQuery& q) {
 }
 
 Rgb Sign(const SurfaceStyle& style, const TexelQuery& q) {
-  const double inner = FilteredPulse(q.s, 1e6, 0.5, 0.05, q.footprint_s) *
-                       FilteredPulse(q.t, 1e6, 0.5, 0.05, q.footprint_t);
+  const double inner =
+      FilteredBox(q.s, 0.05, 0.55, q.footprint_s) * FilteredBox(q.t, 0.05, 0.55, q.footprint_t);
   return Mix(Grey(0.2), style.tint, inner);
 }
 
@@ -285,20 +335,6 @@ Rgb Cloth(const SurfaceStyle& style, const TexelQuery& q) {
 }
 
 }  // namespace
-
-double ValueNoise(double x, double y, uint32_t seed) {
-  const double fx = std::floor(x), fy = std::floor(y);
-  const int32_t ix = static_cast<int32_t>(static_cast<int64_t>(fx));
-  const int32_t iy = static_cast<int32_t>(static_cast<int64_t>(fy));
-  double tx = x - fx, ty = y - fy;
-  tx = tx * tx * (3.0 - 2.0 * tx);
-  ty = ty * ty * (3.0 - 2.0 * ty);
-  const double a = HashUnit(ix, iy, seed), b = HashUnit(ix + 1, iy, seed);
-  const double c = HashUnit(ix, iy + 1, seed), d = HashUnit(ix + 1, iy + 1, seed);
-  const double top = a + (b - a) * tx;
-  const double bottom = c + (d - c) * tx;
-  return top + (bottom - top) * ty;
-}
 
 double FilteredFbm(double x, double y, double footprint, double frequency, int octaves, double gain,
                    uint32_t seed) {

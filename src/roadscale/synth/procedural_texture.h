@@ -1,9 +1,12 @@
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "roadscale/synth/mesh.h"
+#include "roadscale/synth/random.h"
 #include "roadscale/synth/scene_options.h"
 
 namespace roadscale::synth {
@@ -38,7 +41,19 @@ Rgb MaterialAlbedo(const SurfaceStyle& style, const TexelQuery& query,
 
 // Building blocks, exposed for tests.
 // Smooth value noise in [0, 1).
-double ValueNoise(double x, double y, uint32_t seed);
+inline double ValueNoise(double x, double y, uint32_t seed) {
+  const double fx = std::floor(x), fy = std::floor(y);
+  const int32_t ix = static_cast<int32_t>(static_cast<int64_t>(fx));
+  const int32_t iy = static_cast<int32_t>(static_cast<int64_t>(fy));
+  double tx = x - fx, ty = y - fy;
+  tx = tx * tx * (3.0 - 2.0 * tx);
+  ty = ty * ty * (3.0 - 2.0 * ty);
+  const double a = HashUnit(ix, iy, seed), b = HashUnit(ix + 1, iy, seed);
+  const double c = HashUnit(ix, iy + 1, seed), d = HashUnit(ix + 1, iy + 1, seed);
+  const double top = a + (b - a) * tx;
+  const double bottom = c + (d - c) * tx;
+  return top + (bottom - top) * ty;
+}
 // Sum of `octaves` value-noise octaves from `frequency` (cycles per metre), each doubling
 // the frequency and scaling the amplitude by `gain`; octaves whose wavelength is below two
 // footprints fade out. Result roughly in [-0.5, 0.5], mean 0.
@@ -47,5 +62,12 @@ double FilteredFbm(double x, double y, double footprint, double frequency, int o
 // Share of [x - footprint/2, x + footprint/2] covered by the pulses [k p + offset,
 // k p + offset + width] (a box-filtered pulse train).
 double FilteredPulse(double x, double period, double width, double offset, double footprint);
+// Share of [x - footprint/2, x + footprint/2] inside [low, high] (one box-filtered pulse).
+inline double FilteredBox(double x, double low, double high, double footprint) {
+  if (footprint < 1e-6) return (x >= low && x < high) ? 1.0 : 0.0;
+  const double half = 0.5 * footprint;
+  const double overlap = std::min(x + half, high) - std::max(x - half, low);
+  return overlap > 0.0 ? overlap / footprint : 0.0;
+}
 
 }  // namespace roadscale::synth

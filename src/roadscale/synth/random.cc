@@ -52,19 +52,4 @@ Rng Rng::Fork(uint64_t stream) {
   return Rng(SplitMix64(s));
 }
 
-uint32_t Hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-uint32_t Hash3(int32_t x, int32_t y, uint32_t seed) {
-  uint32_t h = Hash32(static_cast<uint32_t>(x) * 0x8da6b343U ^ seed);
-  h = Hash32(h ^ (static_cast<uint32_t>(y) * 0xd8163841U));
-  return h;
-}
-
 }  // namespace roadscale::synth

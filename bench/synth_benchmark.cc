@@ -1,0 +1,79 @@
+// Speed of the synthetic scene renderer (`roadscale synth`): frames per second at KITTI's
+// 1241x376, with 1 and 2 rendering threads, and the cost of writing a frame's PNGs.
+#include <memory>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include "roadscale/synth/synthetic_scene.h"
+
+namespace {
+
+using roadscale::synth::PresetNames;
+using roadscale::synth::PresetSceneOptions;
+using roadscale::synth::SceneOptions;
+using roadscale::synth::SyntheticScene;
+using roadscale::synth::SynthFrame;
+
+constexpr int kFrames = 100;
+
+// Renders the frames of a 100-frame sequence in turn. Arguments: preset index, threads,
+// colour (0/1).
+void BM_SynthRenderFrame(benchmark::State& state) {
+  SceneOptions options = PresetSceneOptions(PresetNames()[state.range(0)]);
+  options.image.threads = static_cast<int>(state.range(1));
+  const bool colour = state.range(2) != 0;
+  SyntheticScene scene(options, kFrames);
+  int index = 0;
+  for (auto _ : state) {
+    SynthFrame frame = scene.Render(index, colour);
+    benchmark::DoNotOptimize(frame.images.grey.data);
+    index = (index + 1) % kFrames;
+  }
+  state.SetLabel(options.preset);
+  state.counters["frames/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SynthRenderFrame)
+    ->ArgNames({"preset", "threads", "colour"})
+    ->Args({0, 2, 0})
+    ->Args({0, 1, 0})
+    ->Args({0, 2, 1})
+    ->Args({1, 2, 0})
+    ->Args({2, 2, 0})
+    ->Args({3, 2, 0})
+    ->Args({4, 2, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Encoding one frame's PNGs as `roadscale synth` writes them (grey, labels, depth).
+void BM_SynthEncodeFramePngs(benchmark::State& state) {
+  SceneOptions options = PresetSceneOptions("urban");
+  SyntheticScene scene(options, 1);
+  const SynthFrame frame = scene.Render(0, false);
+  std::vector<uchar> buffer;
+  for (auto _ : state) {
+    for (const cv::Mat* image : {&frame.images.grey, &frame.images.labels, &frame.images.depth}) {
+      cv::imencode(".png", *image, buffer);
+      benchmark::DoNotOptimize(buffer.data());
+    }
+  }
+}
+BENCHMARK(BM_SynthEncodeFramePngs)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Building a 100-frame urban scene: road, roadside and traffic, before the first frame.
+void BM_SynthBuildScene(benchmark::State& state) {
+  const SceneOptions options = PresetSceneOptions("urban");
+  for (auto _ : state) {
+    auto scene = std::make_unique<SyntheticScene>(options, kFrames);
+    benchmark::DoNotOptimize(scene.get());
+  }
+}
+BENCHMARK(BM_SynthBuildScene)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
