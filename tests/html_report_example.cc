@@ -3,12 +3,13 @@
 // screenshot. The numbers imitate a run (a drive with a stop, noisy raw scale, a filtered
 // one, stages losing points, held frames) but come from no pipeline.
 //
-//   roadscale_html_report_example OUT.html [--no-ground-truth]
+//   roadscale_html_report_example OUT.html [--no-ground-truth] [--frames N (600)]
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -34,13 +35,12 @@ class Uniform {
   std::mt19937 engine_;
 };
 
-HtmlReportInput ExampleRun(bool with_ground_truth) {
-  constexpr int kFrames = 600;
+HtmlReportInput ExampleRun(bool with_ground_truth, int frames) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   Uniform uniform(7);
   HtmlReportInput input;
   input.title = "roadscale run: example drive (made-up data)";
-  input.inputs = {{"images", "example/images (600 frames, 10 Hz)"},
+  input.inputs = {{"images", "example/images (10 Hz)"},
                   {"camera", "example/camera.yaml"},
                   {"config", "config/kitti.yaml"},
                   {"segmentation", "models/espnetv2_512x256.onnx"},
@@ -61,7 +61,7 @@ HtmlReportInput ExampleRun(bool with_ground_truth) {
   Rigid3d gt = Rigid3d::Identity();
   Rigid3d est = Rigid3d::Identity();
   double last_scale = 1.0;
-  for (int i = 0; i < kFrames; ++i) {
+  for (int i = 0; i < frames; ++i) {
     // Metres per frame: cruising, braking to a stop at frames 300-329, pulling away.
     const double speed = i >= 300 && i < 330   ? 0.0
                          : i >= 270 && i < 300 ? 1.2 * (300 - i) / 30.0
@@ -95,23 +95,24 @@ HtmlReportInput ExampleRun(bool with_ground_truth) {
       const Eigen::Matrix3d rotation =
           Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY()).toRotationMatrix();
       gt = gt * MakeRigid3d(rotation, Eigen::Vector3d(0.0, 0.0, speed));
-      est =
-          est *
-          MakeRigid3d(
-              rotation *
-                  Eigen::AngleAxisd(2e-4 * uniform(), Eigen::Vector3d::UnitY()).toRotationMatrix(),
-              Eigen::Vector3d(0.0, 0.0, scale_used));
+      // A small yaw bias, as a frontend's rotation drifts.
+      const double yaw_error = 1e-4 + 2e-4 * uniform();
+      est = est * MakeRigid3d(
+                      rotation *
+                          Eigen::AngleAxisd(yaw_error, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+                      Eigen::Vector3d(0.0, 0.0, scale_used));
     }
     input.gt_world_from_cam.push_back(gt);
     input.est_world_from_cam.push_back(est);
   }
   input.series = {raw,     filtered, truth,           road,        vote,    model,
                   inliers, plane_h,  ms_segmentation, ms_frontend, ms_scale};
-  input.wall_time_s = 26.4;
-  input.warnings = {"frames 420-440: too few road points, the scale was held"};
-  if (with_ground_truth) {
+  input.wall_time_s = 0.044 * frames;
+  if (frames > 420) input.warnings = {"frames 420-440: too few road points, the scale was held"};
+  // The metrics need two poses.
+  if (with_ground_truth && frames >= 2) {
     input.evaluation = EvaluateTrajectory(input.gt_world_from_cam, input.est_world_from_cam);
-  } else {
+  } else if (!with_ground_truth) {
     input.gt_world_from_cam.clear();
     input.series.erase(input.series.begin() + 2);  // scale_true needs ground truth
   }
@@ -122,16 +123,32 @@ HtmlReportInput ExampleRun(bool with_ground_truth) {
 }  // namespace roadscale
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3 || (argc == 3 && std::strcmp(argv[2], "--no-ground-truth") != 0)) {
-    std::fprintf(stderr, "usage: %s OUT.html [--no-ground-truth]\n", argv[0]);
+  const char* out = nullptr;
+  bool with_ground_truth = true;
+  int frames = 600;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--no-ground-truth") == 0) {
+      with_ground_truth = false;
+    } else if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
+      frames = std::atoi(argv[++i]);
+    } else if (out == nullptr && argv[i][0] != '-') {
+      out = argv[i];
+    } else {
+      out = nullptr;
+      break;
+    }
+  }
+  if (out == nullptr || frames < 1) {
+    std::fprintf(stderr, "usage: %s OUT.html [--no-ground-truth] [--frames N (600, >= 1)]\n",
+                 argv[0]);
     return 2;
   }
   try {
-    roadscale::WriteHtmlReport(argv[1], roadscale::ExampleRun(argc == 2));
+    roadscale::WriteHtmlReport(out, roadscale::ExampleRun(with_ground_truth, frames));
   } catch (const roadscale::Error& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  std::printf("%s\n", argv[1]);
+  std::printf("%s\n", out);
   return 0;
 }

@@ -403,7 +403,9 @@ void DrawFrameStatus(cairo_t* cr, double width, double height,
     ++counts[k].second;
     index_of_frame.push_back(k);
   }
-  const Axes axes{100.0, 40.0, width - 20.0, height - 90.0, FrameRange(status.size()), {0.0, 1.0}};
+  // Cells fill the strip: frames -0.5 .. n - 0.5.
+  const Range frame_range{-0.5, static_cast<double>(std::max<size_t>(status.size(), 1)) - 0.5};
+  const Axes axes{100.0, 40.0, width - 20.0, height - 90.0, frame_range, {0.0, 1.0}};
   cairo_set_font_size(cr, 16.0);
   SetColour(cr, kBlack);
   ShowText(cr, "Status per frame", 0.5 * (axes.left + axes.right), axes.top - 12.0, 0.5, 1.0);

@@ -1,10 +1,12 @@
 #include "roadscale/eval/plots.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 #include <cairo.h>
 
@@ -128,6 +130,82 @@ TEST(Plots, UnwritableFolderIsAnError) {
     EXPECT_NE(std::string(e.what()).find("not_a_folder"), std::string::npos) << e.what();
   }
 }
+
+// Cairo numbers its SVG surfaces by a process-wide counter; the rest of a document depends
+// only on the drawing.
+std::string WithoutSurfaceNumbers(const std::string& svg) {
+  return std::regex_replace(svg, std::regex("surface[0-9]+"), "surface");
+}
+
+TEST(Plots, InMemorySvgIsTheWrittenFile) {
+  const std::vector<Rigid3d> gt = testing::CurvyDrive(300, 1.0);
+  const std::vector<Rigid3d> est = testing::PerturbedEstimate(gt, 3, 0.05, 0.02, 2e-4);
+  const KittiOdometryResult kitti = EvaluateKittiOdometry(gt, est);
+  testing::TempDir dir;
+  WriteEvaluationPlots(dir.path().string(), gt, est, kitti);
+  EXPECT_EQ(WithoutSurfaceNumbers(RenderTopViewSvg(gt, est)),
+            WithoutSurfaceNumbers(ReadAll(dir.File("trajectory_top_view.svg"))));
+  EXPECT_EQ(WithoutSurfaceNumbers(RenderKittiErrorSvg(kitti, KittiErrorKind::kTranslation)),
+            WithoutSurfaceNumbers(ReadAll(dir.File("t_err_vs_length.svg"))));
+  EXPECT_EQ(WithoutSurfaceNumbers(RenderKittiErrorSvg(kitti, KittiErrorKind::kRotation)),
+            WithoutSurfaceNumbers(ReadAll(dir.File("r_err_vs_length.svg"))));
+}
+
+TEST(Plots, TopViewWithoutGroundTruthDrawsTheEstimate) {
+  const std::vector<Rigid3d> est = testing::CurvyDrive(100, 1.0);
+  ASSERT_NE(RenderTopViewSvg(est, est, 400, 400).find("stroke:rgb(85%,10%,10%)"),
+            std::string::npos);
+  const std::string svg = RenderTopViewSvg({}, est, 400, 400);
+  EXPECT_EQ(svg.find("stroke:rgb(85%,10%,10%)"), std::string::npos);  // no ground-truth red
+  EXPECT_NE(svg.find("stroke:rgb(10%,25%,85%)"), std::string::npos);  // the estimate's blue
+  EXPECT_NE(RenderTopViewSvg({}, {Rigid3d::Identity()}).find("<svg"), std::string::npos);
+}
+
+// The `d` attribute of the first path whose style contains `style_part`.
+std::string PathData(const std::string& svg, const std::string& style_part) {
+  const size_t style = svg.find(style_part);
+  if (style == std::string::npos) return "";
+  const size_t begin = svg.find("d=\"", style) + 3;
+  return svg.substr(begin, svg.find('"', begin) - begin);
+}
+
+TEST(Plots, FrameLinesBreakAtMissingValuesAndDotLoneValues) {
+  const double nan = std::nan("");
+  const FrameLinePlot plot{
+      "Test", "Value", {{"a", {1, 2, nan, 3, 4}}, {"b", {nan, 5, nan, nan}}}, false};
+  const std::string svg = RenderFrameLinesSvg(plot, 400, 200);
+  // Line a (first palette colour, 1.5 px): two pieces of one segment each.
+  const std::string a = PathData(svg,
+                                 "stroke-width:1.5;stroke-linecap:butt;stroke-linejoin:round;"
+                                 "stroke:rgb(12%,47%,71%)");
+  EXPECT_EQ(std::count(a.begin(), a.end(), 'M'), 2) << a;
+  EXPECT_EQ(std::count(a.begin(), a.end(), 'L'), 2) << a;
+  // b has one value, at frame 1: a filled dot (curves) in the second colour.
+  const std::string b = PathData(svg, "fill:rgb(100%,50%,5%)");
+  EXPECT_GT(std::count(b.begin(), b.end(), 'C'), 0) << b;
+  // A single frame, and no value at all, still draw.
+  EXPECT_NE(RenderFrameLinesSvg({"One", "v", {{"a", {2.0}}}, true}).find("<svg"),
+            std::string::npos);
+  EXPECT_NE(RenderFrameLinesSvg({"None", "v", {{"a", {nan, nan}}}, false}).find("<svg"),
+            std::string::npos);
+  EXPECT_NE(RenderFrameLinesSvg({"Empty", "v", {}, false}).find("<svg"), std::string::npos);
+}
+
+TEST(Plots, StatusStripHasOneCellPerRunOfEqualStatuses) {
+  const std::string svg = RenderFrameStatusSvg({"ok", "ok", "held", "ok", "stationary"});
+  // Cells: ok (frames 0-1), held, ok, stationary; plus one legend swatch per status.
+  const auto count = [&](const std::string& fill) {
+    size_t n = 0;
+    for (size_t at = svg.find(fill); at != std::string::npos; at = svg.find(fill, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("fill:rgb(12%,47%,71%)"), 3u);  // ok: 2 cells + swatch
+  EXPECT_EQ(count("fill:rgb(100%,50%,5%)"), 2u);  // held
+  EXPECT_EQ(count("fill:rgb(17%,63%,17%)"), 2u);  // stationary
+  EXPECT_NE(RenderFrameStatusSvg({}).find("<svg"), std::string::npos);
+}
+
+TEST(Plots, FigureOfNoSizeIsAnError) { EXPECT_THROW(RenderFrameStatusSvg({"ok"}, 0, 100), Error); }
 
 }  // namespace
 }  // namespace roadscale
