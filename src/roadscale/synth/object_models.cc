@@ -55,26 +55,50 @@ Mesh MakeCar(const CarShape& shape, const Rgb& paint, uint32_t variant) {
   const SurfaceStyle glass = Style(Material::kCarGlass, label::kCar, variant,
                                    {paint.r * 0.8f, paint.g * 0.8f, paint.b * 0.8f});
   const SurfaceStyle tyre = Style(Material::kTyre, label::kCar, variant, {0.07f, 0.07f, 0.07f});
-  const SurfaceStyle dark = Style(Material::kTyre, label::kCar, variant, {0.05f, 0.05f, 0.05f});
+  const SurfaceStyle dark = Style(Material::kMetal, label::kCar, variant, {0.05f, 0.05f, 0.05f});
+  const SurfaceStyle head = Style(Material::kMetal, label::kCar, variant, {0.85f, 0.85f, 0.8f});
+  const SurfaceStyle tail = Style(Material::kMetal, label::kCar, variant, {0.55f, 0.06f, 0.05f});
+  const SurfaceStyle plate = Style(Material::kMetal, label::kCar, variant, {0.9f, 0.9f, 0.88f});
+  const double length = shape.length, width = shape.width, height = shape.height;
   const double clearance = 0.28;
-  const double body_top = std::min(0.95, 0.55 * shape.height);
+  const double body_top = std::min(0.95, 0.55 * height);
   // Dark underbody between the wheels, slightly inset.
-  mesh.AddBox({0.0, 0.0, 0.18}, axes, shape.length - 0.9, shape.width - 0.3, clearance - 0.18,
-              &dark, nullptr);
-  mesh.AddBox({0.0, 0.0, clearance}, axes, shape.length, shape.width, body_top - clearance, &body,
-              &body, -(body_top - clearance));
-  // Cabin: glazed sides, painted roof, set back from the bonnet.
-  const double cabin_length = 0.55 * shape.length;
-  const double cabin_x = -0.08 * shape.length;
-  const double roof = 0.08;
-  mesh.AddBox({cabin_x, 0.0, body_top}, axes, cabin_length, shape.width - 0.12,
-              shape.height - body_top - roof, &glass, nullptr);
-  mesh.AddBox({cabin_x, 0.0, shape.height - roof}, axes, cabin_length - 0.1, shape.width - 0.16,
-              roof, &body, &body);
+  mesh.AddBox({0.0, 0.0, 0.18}, axes, length - 0.9, width - 0.3, clearance - 0.18, &dark, nullptr);
+  mesh.AddBox({0.0, 0.0, clearance}, axes, length, width, body_top - clearance, &body, &body);
+  // Cabin: a frustum with a raked windscreen and rear window, glazed, with a painted roof.
+  const double x0 = -0.45 * length, x1 = 0.22 * length;           // cabin foot, back and front
+  const double t0 = x0 + 0.12 * length, t1 = x1 - 0.22 * length;  // roof, back and front
+  const double wb = 0.5 * width - 0.06, wt = 0.5 * width - 0.2;
+  const double z0 = body_top, z1 = height;
+  const Eigen::Vector3d b[4] = {{x0, -wb, z0}, {x1, -wb, z0}, {x1, wb, z0}, {x0, wb, z0}};
+  const Eigen::Vector3d t[4] = {{t0, -wt, z1}, {t1, -wt, z1}, {t1, wt, z1}, {t0, wt, z1}};
+  const double rise = z1 - z0;
+  // The windscreen and rear window have no pillars: their frame colour is the glass's.
+  const SurfaceStyle screen =
+      Style(Material::kCarGlass, label::kCar, variant, {0.12f, 0.13f, 0.15f});
+  for (int k = 0; k < 4; ++k) {
+    const int j = (k + 1) % 4;
+    const double run = (b[j] - b[k]).norm();
+    mesh.AddQuad(b[k], b[j], t[j], t[k], {0.0, 0.0}, {run, 0.0}, {run, rise}, {0.0, rise},
+                 k % 2 == 0 ? glass : screen);
+  }
+  mesh.AddQuad(t[0], t[1], t[2], t[3], {0.0, 0.0}, {t1 - t0, 0.0}, {t1 - t0, 2 * wt}, {0.0, 2 * wt},
+               body);
+  // Lights and number plates, standing 1 cm proud of the body.
+  const double light_z = body_top - 0.2;
+  for (int side = -1; side <= 1; side += 2) {
+    const double y = side * (0.5 * width - 0.27);
+    mesh.AddBox({0.5 * length + 0.005, y, light_z}, axes, 0.02, 0.3, 0.12, &head, nullptr);
+    mesh.AddBox({-0.5 * length - 0.005, y, light_z}, axes, 0.02, 0.28, 0.14, &tail, nullptr);
+  }
+  for (int end = -1; end <= 1; end += 2) {
+    mesh.AddBox({end * (0.5 * length + 0.005), 0.0, clearance + 0.1}, axes, 0.02, 0.52, 0.11,
+                &plate, nullptr);
+  }
   const double wheel = 0.62;
   for (int i = 0; i < 4; ++i) {
-    const double x = (i < 2 ? 1.0 : -1.0) * (0.5 * shape.length - 0.75);
-    const double y = (i % 2 == 0 ? 1.0 : -1.0) * (0.5 * shape.width - 0.14);
+    const double x = (i < 2 ? 1.0 : -1.0) * (0.5 * length - 0.75);
+    const double y = (i % 2 == 0 ? 1.0 : -1.0) * (0.5 * width - 0.14);
     mesh.AddBox({x, y, 0.0}, axes, wheel, 0.24, wheel, &tyre, &tyre);
   }
   return mesh;

@@ -308,19 +308,27 @@ Rgb Bark(const SurfaceStyle& style, const TexelQuery& q) {
 
 Rgb CarPaint(const SurfaceStyle& style, const TexelQuery& q) {
   const double fp = std::max(q.footprint_s, q.footprint_t);
-  // Door seams and a darker sill.
+  // Door seams, a dark bumper strip at the bottom and a trim line under the windows.
   const double seams = 1.0 - FilteredPulse(q.s, 1.1, 1.08, 0.3, q.footprint_s);
-  const double sill = FilteredBox(q.t, -1.0, -0.75, q.footprint_t);
+  const double bumper = FilteredBox(q.t, -1.0, 0.1, q.footprint_t);
   const double n = FilteredFbm(q.s, q.t, fp, 1.0, 3, 0.5, style.variant);
   Rgb colour = Scale(style.tint, (1.0 + 0.1 * n) * (1.0 - 0.5 * seams));
-  return Mix(colour, Grey(0.1), 0.7 * sill);
+  return Mix(colour, Grey(0.08), 0.8 * bumper);
 }
 
 Rgb CarGlass(const SurfaceStyle& style, const TexelQuery& q) {
-  // Pillars between the windows and a reflection gradient.
-  const double pillar = 1.0 - FilteredPulse(q.s, 1.3, 1.15, 0.1, q.footprint_s);
-  const double v = 0.10 + 0.12 * Clamp01(q.t);
+  // Pillars between the side windows and a reflection that brightens upward.
+  const double pillar = 1.0 - FilteredPulse(q.s, 1.2, 1.05, 0.12, q.footprint_s);
+  const double v = 0.1 + 0.25 * Clamp01(q.t / 0.6);
   return Mix(Grey(v), style.tint, pillar);
+}
+
+Rgb Tyre(const SurfaceStyle& style, const TexelQuery& q) {
+  // A light rim on the wheel's side faces (0.62 m square, hub at the centre).
+  const double r = std::hypot(q.s - 0.31, q.t - 0.31);
+  const double soft = 0.5 * std::max(q.footprint_s, q.footprint_t) + 0.005;
+  const double rim = std::clamp((0.19 + soft - r) / (2.0 * soft), 0.0, 1.0);
+  return Mix(style.tint, Grey(0.45), rim);
 }
 
 Rgb Sign(const SurfaceStyle& style, const TexelQuery& q) {
@@ -407,7 +415,7 @@ Rgb MaterialAlbedo(const SurfaceStyle& style, const TexelQuery& query,
     case Material::kCarGlass:
       return CarGlass(style, query);
     case Material::kTyre:
-      return style.tint;
+      return Tyre(style, query);
     case Material::kCloth:
       return Cloth(style, query);
     case Material::kSkin:

@@ -122,7 +122,7 @@ class WorldBuilder {
                                                               {0.56f, 0.55f, 0.53f}, v + 4, true)
                                                   : grass;
     const SurfaceStyle barrier =
-        MakeStyle(Material::kConcrete, label::kWall, {0.68f, 0.68f, 0.66f}, v + 5);
+        MakeStyle(Material::kConcrete, label::kWall, {0.8f, 0.8f, 0.78f}, v + 5);
     const SurfaceStyle rail =
         MakeStyle(Material::kMetal, label::kFence, {0.6f, 0.62f, 0.64f}, v + 6, false, true);
 

@@ -76,6 +76,8 @@ Rigid3d SyntheticScene::SceneFromCam(int index) const {
 }
 
 Rigid3d SyntheticScene::WorldFromCam(int index) const {
+  // Frame 0 is the world by definition; the product would leave rounding noise.
+  if (index == 0) return Rigid3d::Identity();
   return world_from_scene_ * SceneFromCam(index);
 }
 
@@ -97,7 +99,7 @@ SynthFrame SyntheticScene::Render(int index, bool colour) {
   frame.state = EgoState(index);
   const Rigid3d scene_from_cam = SceneFromCam(index);
   const Rigid3d cam_from_scene = scene_from_cam.inverse();
-  frame.world_from_cam = world_from_scene_ * scene_from_cam;
+  frame.world_from_cam = WorldFromCam(index);
   frame.road_plane = TrueRoadPlane(index);
 
   const ImageOptions& image = options_.image;
