@@ -1,13 +1,16 @@
 // `roadscale run`: the visual odometry on a sequence, writing OUT/poses_kitti.txt while it
-// runs. For now the sequential pipeline without segmentation and with the oracle scale.
+// runs. For now the sequential pipeline without segmentation; the scale from the road plane
+// (the paper's method, the default) or from the ground truth (oracle).
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "roadscale/frontend/feature_detector.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/oracle_scale_source.h"
+#include "roadscale/pipeline/road_scale_source.h"
 #include "roadscale/pipeline/sequential_pipeline.h"
 #include "roadscale/util/error.h"
 
@@ -18,7 +21,8 @@ namespace {
 
 struct RunArguments {
   std::string kitti;
-  std::string scale;
+  std::string scale = "road";
+  std::optional<double> h0;
   bool no_segmentation = false;
   std::string detector = "sift";
   std::string frames;
@@ -29,36 +33,50 @@ void RunRun(const RunArguments& arguments) {
   PipelineOptions options;
   options.frontend.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.Check();
-  if (arguments.scale != "oracle") {
-    throw Error("unknown --scale '" + arguments.scale + "' (expected oracle)");
+  if (arguments.scale != "oracle" && arguments.scale != "road") {
+    throw Error("unknown --scale '" + arguments.scale + "' (expected road or oracle)");
   }
 
   FrameSourceOptions source_options;
   source_options.input = arguments.kitti;
   source_options.type = FrameSourceType::kKitti;
   source_options.frames = ParseFrameRange(arguments.frames);
+  source_options.h0 = arguments.h0;
   const std::unique_ptr<FrameSource> source = OpenFrameSource(source_options);
   for (const std::string& note : source->notes()) std::cerr << "roadscale: note: " << note << '\n';
 
   const Trajectory* ground_truth = source->ground_truth();
-  if (ground_truth == nullptr) {
-    throw Error(arguments.kitti +
-                ": --scale oracle needs ground-truth poses (../../poses/NN.txt beside the "
-                "sequence folder), and there are none");
+  std::unique_ptr<ScaleSource> scale_source;
+  if (arguments.scale == "oracle") {
+    if (ground_truth == nullptr) {
+      throw Error(arguments.kitti +
+                  ": --scale oracle needs ground-truth poses (../../poses/NN.txt beside the "
+                  "sequence folder), and there are none");
+    }
+    scale_source = std::make_unique<OracleScaleSource>(*ground_truth);
+  } else {
+    ScaleEstimatorOptions scale_options;
+    scale_options.camera_height = source->camera().h0;
+    scale_source = std::make_unique<RoadScaleSource>(source->camera().camera, scale_options);
   }
-  OracleScaleSource scale(*ground_truth);
+  ScaleSource& scale = *scale_source;
 
   std::cout << "Input:  " << source->Describe() << '\n'
-            << "Scale:  " << scale.Name() << '\n'
+            << "Scale:  " << scale.Name()
+            << (arguments.scale == "road" ? " (h0 = " + std::to_string(source->camera().h0) + " m)"
+                                          : std::string())
+            << '\n'
             << "Frontend: " << arguments.detector << " features, no segmentation\n";
   const RunSummary summary = RunSequentialPipeline(*source, scale, options, arguments.out);
   // The ground truth of the same frames beside the estimate, so that `roadscale eval` can
   // compare them pose for pose.
-  const std::string gt_path = arguments.out + "/gt_poses_kitti.txt";
-  WriteKittiTrajectory(gt_path, *ground_truth);
   std::cout << summary.Format() << "Poses:  " << arguments.out << "/poses_kitti.txt\n"
-            << "Frames: " << arguments.out << "/frames.csv\n"
-            << "Ground truth of these frames: " << gt_path << '\n';
+            << "Frames: " << arguments.out << "/frames.csv\n";
+  if (ground_truth != nullptr) {
+    const std::string gt_path = arguments.out + "/gt_poses_kitti.txt";
+    WriteKittiTrajectory(gt_path, *ground_truth);
+    std::cout << "Ground truth of these frames: " << gt_path << '\n';
+  }
 }
 
 }  // namespace
@@ -75,9 +93,14 @@ void RegisterRunCommand(CLI::App& app) {
       ->required();
   command
       ->add_option("--scale", arguments->scale,
-                   "Where each step's length comes from: oracle = the ground truth's step "
-                   "length (needs .../poses/NN.txt; isolates the frontend's error)")
-      ->required();
+                   "Where each step's length comes from: road = the road plane and the camera "
+                   "height h0 (the paper's method; per-frame diagnostics in frames.csv), "
+                   "oracle = the ground truth's step length (needs .../poses/NN.txt; isolates "
+                   "the frontend's error)")
+      ->capture_default_str();
+  command->add_option("--h0", arguments->h0,
+                      "Camera height above the road in metres (default: the sequence's "
+                      "camera.yaml, else KITTI's 1.65)");
   command->add_flag("--no-segmentation", arguments->no_segmentation,
                     "Run without semantic segmentation (features on the whole image). The only "
                     "mode for now: the flag is accepted and changes nothing (default: on)");

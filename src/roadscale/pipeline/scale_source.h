@@ -30,6 +30,9 @@ struct ScaleResult {
   double step_length_m = 0.0;
   // One word or phrase for the per-frame record ("oracle", "held: too few points", ...).
   std::string status;
+  // The source's own columns of OUT/frames.csv (see DiagnosticsCsvHeader), comma-separated;
+  // empty when the source has none for this frame.
+  std::string diagnostics_csv;
 };
 
 // Where the metric length of each step comes from: the ground truth (oracle), the road plane
@@ -40,6 +43,9 @@ class ScaleSource {
   // For logs and the run summary, e.g. "oracle".
   virtual std::string Name() const = 0;
   virtual ScaleResult StepLength(const ScaleQuery& query) = 0;
+  // Names of the columns the source appends to OUT/frames.csv, comma-separated; empty for
+  // none.
+  virtual std::string DiagnosticsCsvHeader() const { return {}; }
 };
 
 }  // namespace roadscale

@@ -1,5 +1,6 @@
 #include "roadscale/pipeline/sequential_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -69,7 +70,9 @@ SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& s
   records_path_ = (std::filesystem::path(out_dir) / "frames.csv").string();
   poses_ = OpenOutput(poses_path_);
   records_ = OpenOutput(records_path_);
-  WriteLine(records_, records_path_, FrameRecordCsvHeader());
+  const std::string scale_columns = scale_.DiagnosticsCsvHeader();
+  WriteLine(records_, records_path_,
+            FrameRecordCsvHeader() + (scale_columns.empty() ? "" : "," + scale_columns));
 }
 
 FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms) {
@@ -111,7 +114,15 @@ FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms)
 
   WriteLine(poses_, poses_path_, FormatKittiRow(integrator_.world_from_cam()));
   record.total_ms = MillisecondsSince(start) + load_ms;
-  WriteLine(records_, records_path_, FormatFrameRecordCsv(record));
+  // The scale source's own columns, left empty in frames it did not see.
+  const std::string scale_columns = scale_.DiagnosticsCsvHeader();
+  std::string row = FormatFrameRecordCsv(record);
+  if (!scale_columns.empty()) {
+    row += scale.diagnostics_csv.empty()
+               ? std::string(std::count(scale_columns.begin(), scale_columns.end(), ',') + 1, ',')
+               : "," + scale.diagnostics_csv;
+  }
+  WriteLine(records_, records_path_, row);
   ++position_;
   return record;
 }
