@@ -4,6 +4,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include <opencv2/imgproc.hpp>
+
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -153,7 +155,26 @@ std::vector<cv::Point2f> FeatureDetector::Detect(const cv::Mat& image, const cv:
   }
 
   std::vector<cv::KeyPoint> keypoints;
-  detector_->detect(image, keypoints, allowed);
+  const bool sift = options_.type == DetectorType::kSift;
+  if (!sift || !options_.sift_half_resolution) {
+    detector_->detect(image, keypoints, allowed);
+  } else {
+    const cv::Size half_size((image.cols + 1) / 2, (image.rows + 1) / 2);
+    cv::Mat half_image;
+    cv::Mat half_allowed;
+    cv::resize(image, half_image, half_size, 0.0, 0.0, cv::INTER_AREA);
+    cv::resize(allowed, half_allowed, half_size, 0.0, 0.0, cv::INTER_NEAREST);
+    detector_->detect(half_image, keypoints, half_allowed);
+  }
+  for (cv::KeyPoint& kp : keypoints) {
+    if (!sift) continue;
+    // OpenCV's SIFT doubles its input with INTER_LINEAR (pixel centres: up = 2 x + 0.5) but
+    // maps positions back with x = up / 2, so its keypoints sit 0.25 input pixels too far
+    // right and down.
+    kp.pt -= cv::Point2f(0.25f, 0.25f);
+    // A half-resolution pixel x covers the full-resolution pixels around 2 x + 0.5.
+    if (options_.sift_half_resolution) kp.pt = 2.0f * kp.pt + cv::Point2f(0.5f, 0.5f);
+  }
   // Strongest first; ties broken by position so the result never depends on the detector's
   // internal (possibly parallel) output order.
   std::sort(keypoints.begin(), keypoints.end(), [](const cv::KeyPoint& a, const cv::KeyPoint& c) {

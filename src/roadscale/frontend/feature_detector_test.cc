@@ -1,5 +1,6 @@
 #include "roadscale/frontend/feature_detector.h"
 
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -37,6 +38,31 @@ TEST(FeatureDetector, EveryDetectorFindsSpreadFeatures) {
       EXPECT_LT(p.x, image.cols - options.border_px);
       EXPECT_LT(p.y, image.rows - options.border_px);
     }
+  }
+}
+
+TEST(FeatureDetector, HalfResolutionSiftFindsABlobAtItsFullResolutionPosition) {
+  // One dark Gaussian blob (sigma 4 px) on a flat image: SIFT's strongest response is its
+  // centre, whatever resolution it runs at.
+  cv::Mat image(160, 200, CV_8UC1);
+  const double cx = 97.3;
+  const double cy = 71.6;
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const double r2 = (x - cx) * (x - cx) + (y - cy) * (y - cy);
+      image.at<unsigned char>(y, x) =
+          cv::saturate_cast<unsigned char>(200.0 - 150.0 * std::exp(-r2 / (2.0 * 16.0)));
+    }
+  }
+  for (const bool half : {true, false}) {
+    FeatureDetectorOptions options;
+    options.sift_half_resolution = half;
+    options.max_per_cell = 1;
+    options.cell_size_px = 200;
+    const std::vector<cv::Point2f> features = FeatureDetector(options).Detect(image, cv::Mat());
+    ASSERT_EQ(features.size(), 1u) << "half " << half;
+    EXPECT_NEAR(features[0].x, cx, 0.03) << "half " << half;
+    EXPECT_NEAR(features[0].y, cy, 0.03) << "half " << half;
   }
 }
 

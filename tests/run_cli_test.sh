@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# End-to-end tests of `roadscale run`.
+# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|errors]
+#   kitti:  --scale oracle on the first 30 shared KITTI 00 frames writes 30 pose rows and 30
+#           frame records, and the trajectory moves forward about as far as the ground truth
+#           (skipped, exit 77, without the shared data);
+#   errors: a missing sequence, --scale oracle without ground truth, an unknown detector and
+#           an unknown scale source each fail with one line saying what is wrong.
+set -euo pipefail
+roadscale="$1"
+shared="${ROADSCALE_SHARED:-$2}"
+mode="${3:-errors}"
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+fail() {
+  echo "FAILED: $*"
+  exit 1
+}
+expect_line() {  # FILE REGEX
+  grep -Eq -- "$2" "$1" || fail "no line matching '$2' in: $(cat "$1")"
+}
+expect_failure() {  # REGEX COMMAND...
+  local regex="$1"
+  shift
+  if "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"; then
+    fail "succeeded but should fail: $*"
+  fi
+  [[ "$(wc -l <"$out/stderr.txt")" -eq 1 ]] || fail "not one line on stderr: $(cat "$out/stderr.txt")"
+  expect_line "$out/stderr.txt" "$regex"
+}
+
+sequence="$shared/kitti/sequences/00"
+if [[ "$mode" == "kitti" ]]; then
+  if [[ ! -f "$sequence/calib.txt" || ! -f "$shared/kitti/poses/00.txt" ]]; then
+    echo "$sequence or its poses missing (set ROADSCALE_SHARED): skipped"
+    exit 77
+  fi
+  "$roadscale" run --kitti "$sequence" --scale oracle --no-segmentation --frames 0:30 \
+    --out "$out/run" >"$out/log.txt" 2>&1 || fail "run failed: $(cat "$out/log.txt")"
+  cat "$out/log.txt"
+  [[ "$(wc -l <"$out/run/poses_kitti.txt")" -eq 30 ]] || fail "expected 30 pose rows"
+  awk 'NF != 12 { exit 1 }' "$out/run/poses_kitti.txt" || fail "a pose row without 12 numbers"
+  [[ "$(wc -l <"$out/run/frames.csv")" -eq 31 ]] || fail "expected a header and 30 records"
+  expect_line "$out/run/frames.csv" "^0,0,first_frame,first,"
+  expect_line "$out/run/frames.csv" "^29,[^,]+,ok,motion,"
+  expect_line "$out/log.txt" "^Frames: 30 "
+  # First row identity; after 30 frames (about 26 m) the camera is ahead along z.
+  head -1 "$out/run/poses_kitti.txt" | awk '{ if ($1 != 1 || $4 != 0 || $12 != 0) exit 1 }' ||
+    fail "first pose is not the identity"
+  tail -1 "$out/run/poses_kitti.txt" | awk '{ if ($12 < 20 || $12 > 30) exit 1 }' ||
+    fail "last pose is not 20-30 m ahead: $(tail -1 "$out/run/poses_kitti.txt")"
+  [[ "$(wc -l <"$out/run/gt_poses_kitti.txt")" -eq 30 ]] || fail "expected 30 ground-truth rows"
+  echo "run on KITTI 00 frames 0:30: all checks passed"
+  exit 0
+fi
+
+expect_failure "sequence folder not found" \
+  "$roadscale" run --kitti "$out/no-such-sequence" --scale oracle --out "$out/run"
+# A sequence without poses: a short synthetic one with its poses file removed.
+"$roadscale" synth --frames 3 --out "$out/data" >/dev/null 2>&1 || fail "synth failed"
+rm "$out/data/poses/00.txt"
+expect_failure "--scale oracle needs ground-truth poses" \
+  "$roadscale" run --kitti "$out/data/sequences/00" --scale oracle --out "$out/run"
+expect_failure "unknown detector 'surf'" \
+  "$roadscale" run --kitti "$out/data/sequences/00" --scale oracle --detector surf --out "$out/run"
+expect_failure "unknown --scale 'road'" \
+  "$roadscale" run --kitti "$out/data/sequences/00" --scale road --out "$out/run"
+"$roadscale" run --help >"$out/help.txt"
+expect_line "$out/help.txt" "--no-segmentation"
+expect_line "$out/help.txt" "only mode for now"
+echo "run errors: all checks passed"
