@@ -64,15 +64,24 @@ void BM_SynthEncodeFramePngs(benchmark::State& state) {
 }
 BENCHMARK(BM_SynthEncodeFramePngs)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Building a 100-frame urban scene: road, roadside and traffic, before the first frame.
+// Building a scene (road, roadside, traffic) before the first frame. Arguments: preset
+// index, frames.
 void BM_SynthBuildScene(benchmark::State& state) {
-  const SceneOptions options = PresetSceneOptions("urban");
+  const SceneOptions options = PresetSceneOptions(PresetNames()[state.range(0)]);
   for (auto _ : state) {
-    auto scene = std::make_unique<SyntheticScene>(options, kFrames);
+    auto scene = std::make_unique<SyntheticScene>(options, static_cast<int>(state.range(1)));
     benchmark::DoNotOptimize(scene.get());
   }
+  state.SetLabel(options.preset);
 }
-BENCHMARK(BM_SynthBuildScene)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SynthBuildScene)
+    ->ArgNames({"preset", "frames"})
+    ->Args({0, 100})
+    ->Args({0, 1000})
+    ->Args({1, 1000})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 }  // namespace
 

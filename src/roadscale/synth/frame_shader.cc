@@ -74,7 +74,8 @@ double GroundShadowAt(double u, double l, double footprint, const ShadingInputs&
   return cover;
 }
 
-uint8_t ToByte(double v) { return static_cast<uint8_t>(std::clamp(std::lround(v), 0L, 255L)); }
+// Rounds half up, as lround does for the non-negative values that matter.
+uint8_t ToByte(double v) { return static_cast<uint8_t>(std::clamp(v, 0.0, 255.0) + 0.5); }
 
 // Approximately Gaussian noise with unit variance from a pixel hash (sum of 4 bytes).
 double HashNoise(int x, int y, uint32_t seed) {

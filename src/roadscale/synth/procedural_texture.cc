@@ -70,7 +70,7 @@ double Spots(double s, double t, double footprint, double cell, double density, 
   const double margin = std::min(radius, 0.5 * cell);
   const double cs = ci * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 1) >> 8) / 16777216.0;
   const double ct = cj * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 2) >> 8) / 16777216.0;
-  const double d = std::hypot(s - cs, t - ct);
+  const double d = std::sqrt((s - cs) * (s - cs) + (t - ct) * (t - ct));
   const double soft = 0.5 * footprint + 0.004;
   return SmoothStep(radius + soft, radius - soft, d) * std::min(1.0, radius / soft);
 }
@@ -325,7 +325,7 @@ Rgb CarGlass(const SurfaceStyle& style, const TexelQuery& q) {
 
 Rgb Tyre(const SurfaceStyle& style, const TexelQuery& q) {
   // A light rim on the wheel's side faces (0.62 m square, hub at the centre).
-  const double r = std::hypot(q.s - 0.31, q.t - 0.31);
+  const double r = std::sqrt((q.s - 0.31) * (q.s - 0.31) + (q.t - 0.31) * (q.t - 0.31));
   const double soft = 0.5 * std::max(q.footprint_s, q.footprint_t) + 0.005;
   const double rim = std::clamp((0.19 + soft - r) / (2.0 * soft), 0.0, 1.0);
   return Mix(style.tint, Grey(0.45), rim);
