@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # End-to-end tests of `roadscale run`.
-# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|errors]
+# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|road|errors]
 #   kitti:  --scale oracle on the first 30 shared KITTI 00 frames writes 30 pose rows and 30
 #           frame records, and the trajectory moves forward about as far as the ground truth
 #           (skipped, exit 77, without the shared data);
+#   road:   the default --scale road on the same frames: every step scaled from the road plane
+#           ("ok"), its diagnostics columns in frames.csv, and the trajectory 20-30 m ahead;
 #   errors: a missing sequence, --scale oracle without ground truth, an unknown detector and
 #           an unknown scale source each fail with one line saying what is wrong.
 set -euo pipefail
@@ -54,6 +56,23 @@ if [[ "$mode" == "kitti" ]]; then
   exit 0
 fi
 
+if [[ "$mode" == "road" ]]; then
+  if [[ ! -f "$sequence/calib.txt" || ! -f "$shared/kitti/poses/00.txt" ]]; then
+    echo "$sequence or its poses missing (set ROADSCALE_SHARED): skipped"
+    exit 77
+  fi
+  "$roadscale" run --kitti "$sequence" --h0 1.65 --frames 0:30 --out "$out/run" \
+    >"$out/log.txt" 2>&1 || fail "run failed: $(cat "$out/log.txt")"
+  cat "$out/log.txt"
+  expect_line "$out/log.txt" "^Scale:  road \(h0 = 1.65"
+  expect_line "$out/run/frames.csv" "^index,.*,road_raw_scale,road_scale,.*,road_plane_h$"
+  [[ "$(grep -c '"ok",' "$out/run/frames.csv")" -ge 25 ]] || fail "fewer than 25 road-scaled steps"
+  tail -1 "$out/run/poses_kitti.txt" | awk '{ if ($12 < 20 || $12 > 30) exit 1 }' ||
+    fail "last pose is not 20-30 m ahead: $(tail -1 "$out/run/poses_kitti.txt")"
+  echo "run --scale road on KITTI 00 frames 0:30: all checks passed"
+  exit 0
+fi
+
 expect_failure "sequence folder not found" \
   "$roadscale" run --kitti "$out/no-such-sequence" --scale oracle --out "$out/run"
 # A sequence without poses: a short synthetic one with its poses file removed.
@@ -63,8 +82,8 @@ expect_failure "--scale oracle needs ground-truth poses" \
   "$roadscale" run --kitti "$out/data/sequences/00" --scale oracle --out "$out/run"
 expect_failure "unknown detector 'surf'" \
   "$roadscale" run --kitti "$out/data/sequences/00" --scale oracle --detector surf --out "$out/run"
-expect_failure "unknown --scale 'road'" \
-  "$roadscale" run --kitti "$out/data/sequences/00" --scale road --out "$out/run"
+expect_failure "unknown --scale 'magic'" \
+  "$roadscale" run --kitti "$out/data/sequences/00" --scale magic --out "$out/run"
 "$roadscale" run --help >"$out/help.txt"
 expect_line "$out/help.txt" "--no-segmentation"
 expect_line "$out/help.txt" "only mode for now"
