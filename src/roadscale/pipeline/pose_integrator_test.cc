@@ -21,10 +21,11 @@ ScaleResult Length(double metres) {
 }
 
 const Eigen::Matrix3d kIdentity = Eigen::Matrix3d::Identity();
+const Eigen::Vector3d kZero = Eigen::Vector3d::Zero();
 
 TEST(PoseIntegrator, ChainsInverseStepsFromTheFirstFrame) {
   PoseIntegrator integrator;
-  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, {}), {}),
+  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {}),
             PoseUpdate::kFirst);
   EXPECT_TRUE(integrator.world_from_cam().isApprox(Rigid3d::Identity()));
 
@@ -46,10 +47,10 @@ TEST(PoseIntegrator, ChainsInverseStepsFromTheFirstFrame) {
 
 TEST(PoseIntegrator, KeepsThePoseWhenStationary) {
   PoseIntegrator integrator;
-  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, {}), {});
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
   integrator.Apply(Motion(MotionStatus::kOk, kIdentity, {0, 0, -1}), Length(1.0));
   const Rigid3d before = integrator.world_from_cam();
-  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kStationary, kIdentity, {}), Length(0.01)),
+  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kStationary, kIdentity, kZero), Length(0.01)),
             PoseUpdate::kKept);
   EXPECT_TRUE(integrator.world_from_cam().isApprox(before));
   EXPECT_EQ(integrator.step_length(), 0.0);
@@ -57,7 +58,7 @@ TEST(PoseIntegrator, KeepsThePoseWhenStationary) {
 
 TEST(PoseIntegrator, PureRotationKeepsTheLastDirection) {
   PoseIntegrator integrator;
-  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, {}), {});
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
   const Eigen::Vector3d direction = Eigen::Vector3d(0.1, 0.0, -1.0).normalized();
   integrator.Apply(Motion(MotionStatus::kOk, kIdentity, direction), Length(1.0));
   const Rigid3d before = integrator.world_from_cam();
@@ -73,22 +74,22 @@ TEST(PoseIntegrator, PureRotationKeepsTheLastDirection) {
 
 TEST(PoseIntegrator, RepeatsTheLastStepWithoutAnEstimateAndKeepsTheLastLength) {
   PoseIntegrator integrator;
-  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, {}), {});
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY()).toRotationMatrix();
   integrator.Apply(Motion(MotionStatus::kOk, R, {0, 0, -1}), Length(0.8));
-  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kTooFewInliers, kIdentity, {}), ScaleResult()),
+  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kTooFewInliers, kIdentity, kZero), ScaleResult()),
             PoseUpdate::kConstantVelocity);
   EXPECT_TRUE(integrator.cur_from_prev().linear().isApprox(R));
   EXPECT_TRUE(integrator.cur_from_prev().translation().isApprox(Eigen::Vector3d(0, 0, -0.8)));
-  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kTooFewTracks, kIdentity, {}), Length(0.6)),
+  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kTooFewTracks, kIdentity, kZero), Length(0.6)),
             PoseUpdate::kConstantVelocity);
   EXPECT_DOUBLE_EQ(integrator.step_length(), 0.6);
 }
 
 TEST(PoseIntegrator, NothingMovesBeforeTheFirstEstimate) {
   PoseIntegrator integrator;
-  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, {}), {});
-  integrator.Apply(Motion(MotionStatus::kTooFewTracks, kIdentity, {}), Length(1.0));
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
+  integrator.Apply(Motion(MotionStatus::kTooFewTracks, kIdentity, kZero), Length(1.0));
   EXPECT_TRUE(integrator.world_from_cam().isApprox(Rigid3d::Identity()));
 }
 

@@ -1,9 +1,7 @@
 #include "roadscale/pipeline/sequential_pipeline.h"
 
 #include <algorithm>
-#include <fstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -12,13 +10,6 @@
 
 namespace roadscale {
 namespace {
-
-std::vector<std::string> ReadLines(const std::string& path) {
-  std::ifstream file(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(file, line);) lines.push_back(line);
-  return lines;
-}
 
 TEST(SequentialPipeline, FrameRecordCsvHasOneFieldPerHeaderColumn) {
   FrameRecord record;
