@@ -137,6 +137,9 @@ class ImageFileSequence : public FrameSource {
 
   // Paths of the selected frames' images, in order.
   const std::vector<std::string>& image_paths() const { return paths_; }
+  // Timestamps of the selected frames (seconds), in order, known before any image is read:
+  // another program's trajectory is associated with the frames by them.
+  const std::vector<double>& timestamps() const { return timestamps_; }
 
  protected:
   ImageFileSequence() = default;
