@@ -16,7 +16,7 @@ fail() {
 "$roadscale" synth --preset stop_and_go --frames 4 --seed 3 --out "$out/a" --colour
 seq="$out/a/sequences/00"
 for name in 000000 000003; do
-  for folder in image_0 image_2 semantic depth; do
+  for folder in image_0 image_2 semantic depth moving; do
     [[ -s "$seq/$folder/$name.png" ]] || fail "no $folder/$name.png"
   done
 done

@@ -102,6 +102,7 @@ void ShadeRows(const ShadingInputs& inputs, int row_begin, int row_end, FrameIma
     uint8_t* colour_row = colour ? images->colour.ptr<uint8_t>(y) : nullptr;
     uint8_t* label_row = images->labels.ptr<uint8_t>(y);
     uint16_t* depth_row = images->depth.ptr<uint16_t>(y);
+    uint8_t* moving_row = images->moving.ptr<uint8_t>(y);
     for (int x = 0; x < width; ++x) {
       const int32_t id = ids[static_cast<size_t>(y) * width + x];
       Rgb c;
@@ -110,6 +111,7 @@ void ShadeRows(const ShadingInputs& inputs, int row_begin, int row_end, FrameIma
         c = SkyColour((inputs.world_from_cam_rotation * ray).normalized(), inputs.sky_seed);
         label_row[x] = label::kSky;
         depth_row[x] = 0;
+        moving_row[x] = 0;
       } else {
         const ScreenTriangle& t = triangles[id];
         const double inv_z = t.inv_z[0] * x + t.inv_z[1] * y + t.inv_z[2];
@@ -141,6 +143,7 @@ void ShadeRows(const ShadingInputs& inputs, int row_begin, int row_end, FrameIma
                              (1.0 - SmoothStep(fade_start, inputs.far_distance, z));
         c = Mix(haze_colour, c, clear);
         label_row[x] = style.label;
+        moving_row[x] = t.moving ? 255 : 0;
         const double depth = std::round(z * 256.0);
         depth_row[x] = depth < 65535.5 ? static_cast<uint16_t>(depth) : 0;
       }

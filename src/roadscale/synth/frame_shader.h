@@ -35,6 +35,7 @@ struct FrameImages {
   cv::Mat colour;  // CV_8UC3, BGR
   cv::Mat labels;  // CV_8UC1, Cityscapes train ids
   cv::Mat depth;   // CV_16UC1, z in 1/256 m, 0 where nothing is nearer than 256 m
+  cv::Mat moving;  // CV_8UC1, 255 on objects that move in the world at this instant, else 0
 };
 
 // Shades rows [row_begin, row_end): texture, light and shadow, haze, sky, exposure and

@@ -137,8 +137,8 @@ void AddTree(Mesh& mesh, const Eigen::Vector3d& base, double height, double crow
       Style(Material::kBark, label::kVegetation, variant, {0.22f, 0.2f, 0.17f});
   const SurfaceStyle leaves =
       Style(Material::kFoliage, label::kVegetation, variant,
-            {static_cast<float>(rng.Uniform(0.2, 0.3)), static_cast<float>(rng.Uniform(0.3, 0.42)),
-             static_cast<float>(rng.Uniform(0.12, 0.2))});
+            {static_cast<float>(rng.Uniform(0.3, 0.4)), static_cast<float>(rng.Uniform(0.4, 0.52)),
+             static_cast<float>(rng.Uniform(0.18, 0.26))});
   const double trunk_height = height - 1.4 * crown_radius;
   mesh.AddBox(base - Eigen::Vector3d(0.0, 0.0, 0.3), Eigen::Matrix3d::Identity(), 0.3, 0.3,
               trunk_height + 0.3 + 0.5 * crown_radius, &bark, nullptr);

@@ -36,7 +36,7 @@ void Rasterizer::BeginFrame(const Eigen::Vector3d& sun_in_cam, double ambient) {
   triangles_.clear();
 }
 
-void Rasterizer::AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh) {
+void Rasterizer::AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh, bool moving) {
   const Eigen::Matrix3d rotation = cam_from_mesh.linear();
   const Eigen::Vector3d translation = cam_from_mesh.translation();
   scratch_.resize(mesh.positions.size());
@@ -71,7 +71,7 @@ void Rasterizer::AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh) {
     Eigen::Vector2d st[3];
     for (int k = 0; k < 3; ++k) st[k] = mesh.texcoords[triangle.v[k]].cast<double>();
     if (behind == 0) {
-      AddClippedTriangle(p, st, &triangle.style);
+      AddClippedTriangle(p, st, &triangle.style, moving);
       continue;
     }
     // Sutherland-Hodgman against z = near: a triangle or a quad.
@@ -95,13 +95,13 @@ void Rasterizer::AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh) {
     for (int k = 1; k + 1 < count; ++k) {
       const Eigen::Vector3d q[3] = {poly[0], poly[k], poly[k + 1]};
       const Eigen::Vector2d q_st[3] = {poly_st[0], poly_st[k], poly_st[k + 1]};
-      AddClippedTriangle(q, q_st, &triangle.style);
+      AddClippedTriangle(q, q_st, &triangle.style, moving);
     }
   }
 }
 
 void Rasterizer::AddClippedTriangle(const Eigen::Vector3d p[3], const Eigen::Vector2d st[3],
-                                    const SurfaceStyle* style) {
+                                    const SurfaceStyle* style, bool moving) {
   ScreenTriangle t;
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   double s_over_z[3], t_over_z[3];
@@ -144,6 +144,7 @@ void Rasterizer::AddClippedTriangle(const Eigen::Vector3d p[3], const Eigen::Vec
   cosine = style->two_sided ? std::abs(cosine) : std::max(0.0, cosine);
   t.light = static_cast<float>(ambient_ + (1.0 - ambient_) * cosine);
   t.style = style;
+  t.moving = moving;
   triangles_.push_back(t);
 }
 

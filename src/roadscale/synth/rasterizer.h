@@ -18,7 +18,8 @@ struct ScreenTriangle {
   double x[3], y[3];
   double inv_z[3], s_z[3], t_z[3];
   const SurfaceStyle* style = nullptr;
-  float light = 1.0f;  // direct-light factor from the orientation to the sun
+  float light = 1.0f;   // direct-light factor from the orientation to the sun
+  bool moving = false;  // part of an object that moves in the world at this instant
 };
 
 // A z-buffer rasterizer for an undistorted pinhole camera. Pixel centres sit at integer
@@ -31,9 +32,10 @@ class Rasterizer {
 
   // Starts a frame; `sun_in_cam` is the unit direction towards the sun in the camera frame.
   void BeginFrame(const Eigen::Vector3d& sun_in_cam, double ambient);
-  // Adds the triangles of `mesh` (coordinates in its own frame) seen from the camera. The
-  // mesh must stay alive until the frame is shaded.
-  void AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh);
+  // Adds the triangles of `mesh` (coordinates in its own frame) seen from the camera;
+  // `moving` marks an object that moves in the world. The mesh must stay alive until the
+  // frame is shaded.
+  void AddMesh(const Mesh& mesh, const Rigid3d& cam_from_mesh, bool moving = false);
   // Fills the id and 1/z buffers of rows [row_begin, row_end); threads may run disjoint
   // row ranges at once.
   void Rasterize(int row_begin, int row_end);
@@ -45,7 +47,7 @@ class Rasterizer {
 
  private:
   void AddClippedTriangle(const Eigen::Vector3d p[3], const Eigen::Vector2d st[3],
-                          const SurfaceStyle* style);
+                          const SurfaceStyle* style, bool moving);
 
   PinholeCamera camera_;
   double near_, far_;

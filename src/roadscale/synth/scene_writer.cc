@@ -69,7 +69,9 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   CheckSequenceName(options.sequence);
   const fs::path root(options.out_dir);
   const fs::path sequence = root / "sequences" / options.sequence;
-  for (const char* folder : {"image_0", "semantic", "depth"}) MakeDirectory(sequence / folder);
+  for (const char* folder : {"image_0", "semantic", "depth", "moving"}) {
+    MakeDirectory(sequence / folder);
+  }
   if (options.colour) MakeDirectory(sequence / "image_2");
   MakeDirectory(root / "poses");
 
@@ -93,6 +95,7 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
     if (options.colour) WritePng(sequence / "image_2" / name, frame.images.colour);
     WritePng(sequence / "semantic" / name, frame.images.labels);
     WritePng(sequence / "depth" / name, frame.images.depth);
+    WritePng(sequence / "moving" / name, frame.images.moving);
     char line[160];
     std::snprintf(line, sizeof(line), "%e\n", frame.time);
     times.stream() << line;

@@ -18,6 +18,7 @@ struct SceneWriterOptions {
 //   sequences/NN/image_2/%06d.png   colour frames (with `colour`)
 //   sequences/NN/semantic/%06d.png  Cityscapes train ids (8 bit)
 //   sequences/NN/depth/%06d.png     z depth, 16 bit, 1/256 m, 0 = none (sky, > 256 m)
+//   sequences/NN/moving/%06d.png    255 on objects moving in the world at that frame, else 0
 //   sequences/NN/calib.txt, times.txt, camera.yaml (intrinsics and h0)
 //   sequences/NN/road_planes.txt    "frame nx ny nz h" (camera frame, n . X = h)
 //   poses/NN.txt                    world_from_cam, frame 0 = identity

@@ -135,7 +135,7 @@ SynthFrame SyntheticScene::Render(int index, bool colour) {
   std::vector<GroundShadow> shadows;
   traffic_->Collect(frame.time, u - 40.0, u + image.far_distance, &actors, &scratch, &shadows);
   for (const ActorPose& actor : actors) {
-    rasterizer.AddMesh(*actor.mesh, cam_from_scene * actor.world_from_mesh);
+    rasterizer.AddMesh(*actor.mesh, cam_from_scene * actor.world_from_mesh, actor.moving);
   }
   // Ground shadows near the road in view: the parked cars' and this frame's moving cars'.
   const auto first = std::lower_bound(world_.shadows.begin(), world_.shadows.end(), u - 40.0,
@@ -149,6 +149,7 @@ SynthFrame SyntheticScene::Render(int index, bool colour) {
   frame.images.grey.create(camera.height, camera.width, CV_8UC1);
   frame.images.labels.create(camera.height, camera.width, CV_8UC1);
   frame.images.depth.create(camera.height, camera.width, CV_16UC1);
+  frame.images.moving.create(camera.height, camera.width, CV_8UC1);
   if (colour) frame.images.colour.create(camera.height, camera.width, CV_8UC3);
 
   ShadingInputs inputs;

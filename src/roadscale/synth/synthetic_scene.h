@@ -57,6 +57,7 @@ class SyntheticScene {
   RoadPlane TrueRoadPlane(int index) const;
 
   const CentreLine& centre_line() const { return *line_; }
+  const VehicleMotion& motion() const { return *motion_; }
   const LateralLayout& layout() const { return layout_; }
 
   // Renders frame `index` (0 <= index < frames()); `colour` adds the BGR image.

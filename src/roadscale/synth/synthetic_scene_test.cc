@@ -290,7 +290,7 @@ TEST(SyntheticScene, SameSeedGivesIdenticalFilesWhateverTheThreads) {
     EXPECT_EQ(ReadFile(entry.path()), ReadFile(b.path() / relative)) << relative;
     ++files;
   }
-  EXPECT_EQ(files, 4 * 4 + 5);  // 4 images a frame, calib, times, camera, planes, poses
+  EXPECT_EQ(files, 4 * 5 + 5);  // 5 images a frame, calib, times, camera, planes, poses
   const fs::path image = fs::path("sequences") / "00" / "image_0" / "000003.png";
   EXPECT_NE(ReadFile(a.path() / image), ReadFile(c.path() / image));
 }
@@ -307,6 +307,35 @@ TEST(SyntheticScene, StationaryFramesHaveIdenticalPoses) {
     }
   }
   EXPECT_GT(stationary, 30);
+}
+
+TEST(SyntheticScene, MovingMaskMarksOnlyRoadUsersInMotion) {
+  // Parked cars only: nothing moves.
+  SceneOptions parked = EmptyStreet("urban");
+  parked.traffic.parked_fraction = 0.9;
+  SyntheticScene still(parked, 3);
+  for (int i = 0; i < 3; ++i) {
+    const SynthFrame frame = still.Render(i, false);
+    EXPECT_EQ(cv::countNonZero(frame.images.labels == label::kCar) > 1000, true);
+    EXPECT_EQ(cv::countNonZero(frame.images.moving), 0);
+  }
+  // Stop and go with the lead car as the only other road user: it replays the ego's motion
+  // one second ahead, so it moves exactly when the ego moves one second later.
+  SceneOptions options = EmptyStreet("stop_and_go");
+  options.traffic.lead_car = true;
+  options.seed = 5;
+  SyntheticScene scene(options, 150);
+  int moving_frames = 0, standing_frames = 0;
+  for (int i = 0; i < scene.frames(); i += 3) {
+    const SynthFrame frame = scene.Render(i, false);
+    const cv::Mat moving = frame.images.moving != 0;
+    EXPECT_EQ(cv::countNonZero(moving & (frame.images.labels != label::kCar)), 0) << i;
+    const bool lead_moves = scene.motion().StateAt(frame.time + 1.0).speed > 0.0;
+    EXPECT_EQ(cv::countNonZero(moving) > 0, lead_moves) << i;
+    (lead_moves ? moving_frames : standing_frames)++;
+  }
+  EXPECT_GT(moving_frames, 5);
+  EXPECT_GT(standing_frames, 5);
 }
 
 TEST(SyntheticScene, RejectsBadOptions) {

@@ -148,6 +148,8 @@ void Traffic::Collect(double time, double u_min, double u_max, std::vector<Actor
     ActorPose pose;
     pose.mesh = &car.mesh;
     pose.world_from_mesh = MakeRigid3d(axes, frame.point + l * frame.lateral);
+    // The lead car replays the ego's motion: it stands when the ego stood.
+    pose.moving = car.kind != Kind::kLead || ego_.StateAt(time + lead_delay_).speed > 0.0;
     poses->push_back(pose);
     if (shadows_) {
       const Eigen::Vector2d offset = ShadowOffset(line_, u, 0.8 * car.shape.height, sun_);
@@ -178,6 +180,7 @@ void Traffic::Collect(double time, double u_min, double u_max, std::vector<Actor
     axes.col(1) = axes.col(2).cross(axes.col(0));
     ActorPose pose;
     pose.mesh = &scratch->back();
+    pose.moving = walker.speed != 0.0;
     pose.world_from_mesh =
         MakeRigid3d(axes, frame.point + walker.l * frame.lateral + kerb_height_ * frame.normal);
     poses->push_back(pose);

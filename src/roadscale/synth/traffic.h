@@ -14,10 +14,12 @@
 
 namespace roadscale::synth {
 
-// A moving object at one instant: its mesh (in its own frame) and where it is.
+// A road user at one instant: its mesh (in its own frame), where it is, and whether it is
+// moving then (a stopped lead car and a standing pedestrian are not).
 struct ActorPose {
   const Mesh* mesh = nullptr;
   Rigid3d world_from_mesh = Rigid3d::Identity();
+  bool moving = true;
 };
 
 // Moving cars and pedestrians on their own trajectories along the road: a lead car that
