@@ -14,6 +14,9 @@ void RegisterEvalCommand(CLI::App& app);
 // `roadscale run`: the visual odometry on a sequence, poses written while it runs.
 void RegisterRunCommand(CLI::App& app);
 
+// `roadscale rescale`: another VO's trajectory given its metric scale from the road plane.
+void RegisterRescaleCommand(CLI::App& app);
+
 // `roadscale segment`: label images and overlays from a segmentation model.
 void RegisterSegmentCommand(CLI::App& app);
 

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   roadscale::cli::RegisterEvalCommand(app);
   roadscale::cli::RegisterRunCommand(app);
+  roadscale::cli::RegisterRescaleCommand(app);
   roadscale::cli::RegisterSegmentCommand(app);
   roadscale::cli::RegisterSynthCommand(app);
 

@@ -1,0 +1,304 @@
+// `roadscale rescale`: the scale module serving any visual odometry. Takes another VO's
+// trajectory (arbitrary, drifting scale; keyframes only is fine), keeps its rotations and
+// translation directions, and gives every step its metric length from the road plane.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "roadscale/eval/trajectory_evaluation.h"
+#include "roadscale/io/frame_source.h"
+#include "roadscale/io/trajectory_io.h"
+#include "roadscale/pipeline/trajectory_rescaler.h"
+#include "roadscale/segmentation/label_image_segmenter.h"
+#include "roadscale/segmentation/make_segmenter.h"
+#include "roadscale/util/error.h"
+
+#include "commands.h"
+
+namespace roadscale::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RescaleArguments {
+  std::string trajectory;
+  std::string format;
+  std::string kitti;
+  std::string images;
+  std::string camera;
+  std::string model;
+  std::string labels;
+  bool no_segmentation = false;
+  std::optional<double> h0;
+  double max_time_diff = 0.01;
+  std::string detector = "sift";
+  bool no_refine = false;
+  std::string out;
+};
+
+// The format from --format, else from the file: a TUM row has 8 numbers, a KITTI row 12.
+TrajectoryFormat ResolveFormat(const RescaleArguments& arguments) {
+  if (!arguments.format.empty()) return ParseTrajectoryFormat(arguments.format);
+  std::ifstream file(arguments.trajectory);
+  if (!file) ThrowFileError(arguments.trajectory, "cannot open the trajectory file");
+  std::string line;
+  int line_number = 0;
+  while (std::getline(file, line)) {
+    ++line_number;
+    std::istringstream fields(line);
+    std::string first;
+    if (!(fields >> first) || first[0] == '#') continue;
+    int count = 1;
+    std::string field;
+    while (fields >> field) ++count;
+    if (count == 8) return TrajectoryFormat::kTum;
+    if (count == 12) return TrajectoryFormat::kKitti;
+    ThrowFileError(arguments.trajectory, line_number,
+                   "cannot tell the format from a row of " + std::to_string(count) +
+                       " numbers (KITTI: 12, TUM: 8); give --format kitti|tum");
+  }
+  ThrowFileError(arguments.trajectory, "no poses in the file");
+}
+
+std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
+                                         std::string* description) {
+  if (!arguments.labels.empty()) {
+    SegmentationModel model;
+    model.yaml_path = arguments.labels;
+    model.backend = SegmentationBackend::kLabelImages;
+    model.label_images.folder = arguments.labels;
+    if (!fs::is_directory(model.label_images.folder)) {
+      ThrowFileError(arguments.labels, "label folder not found");
+    }
+    auto segmenter = std::make_unique<LabelImageSegmenter>(model, MaskOptions());
+    *description = segmenter->Description();
+    return segmenter;
+  }
+  if (!arguments.model.empty()) {
+    SegmentationOptions options;
+    options.model = arguments.model;
+    std::unique_ptr<Segmenter> segmenter = MakeSegmenter(options);
+    *description = segmenter->Description();
+    return segmenter;
+  }
+  *description = arguments.no_segmentation
+                     ? "none (--no-segmentation)"
+                     : "none (no --model or --labels given: every road-plane candidate is "
+                       "checked geometrically only)";
+  return nullptr;
+}
+
+std::ofstream OpenOutput(const std::string& path) {
+  std::ofstream file(path);
+  if (!file) ThrowFileError(path, "cannot create this file");
+  return file;
+}
+
+std::string Fixed(double value, int digits) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(digits) << value;
+  return text.str();
+}
+
+// One line of the evaluation summary: length ratio, KITTI t_err on 100 m, ATE.
+std::string SummaryLine(const std::string& name, const TrajectoryEvaluation& evaluation) {
+  std::ostringstream line;
+  line << "  " << std::left << std::setw(10) << name << std::right << std::setw(13)
+       << (evaluation.errors.length_ratio ? Fixed(*evaluation.errors.length_ratio, 4) : "-");
+  const KittiLengthResult& l100 = evaluation.kitti.per_length.front();
+  line << std::setw(16)
+       << (l100.t_err
+               ? Fixed(100.0 * *l100.t_err, 2) + " % (" + std::to_string(l100.n_segments) + ")"
+               : "no segment");
+  line << std::setw(12) << Fixed(evaluation.errors.ate_se3_m, 3) << std::setw(12)
+       << (evaluation.errors.ate_sim3_m ? Fixed(*evaluation.errors.ate_sim3_m, 3) : "-") << '\n';
+  return line.str();
+}
+
+void RunRescale(const RescaleArguments& arguments) {
+  TrajectoryRescalerOptions options;
+  options.tracker.detector.type = ParseDetectorType(arguments.detector);
+  options.refine_motion = !arguments.no_refine;
+  const TrajectoryFormat format = ResolveFormat(arguments);
+  const Trajectory external = ReadTrajectory(arguments.trajectory, format);
+  if (external.size() == 0) ThrowFileError(arguments.trajectory, "no poses in the file");
+
+  FrameSourceOptions source_options;
+  source_options.input = arguments.kitti.empty() ? arguments.images : arguments.kitti;
+  source_options.camera_yaml = arguments.camera;
+  source_options.h0 = arguments.h0;
+  source_options.Check();
+  std::unique_ptr<ImageFileSequence> source;
+  if (!arguments.kitti.empty()) {
+    source_options.type = FrameSourceType::kKitti;
+    source = std::make_unique<KittiSequence>(source_options);
+  } else {
+    source_options.type = FrameSourceType::kImageFolder;
+    source = std::make_unique<ImageFolder>(source_options);
+  }
+  options.scale.camera_height = source->camera().h0;
+  options.Check();
+
+  const std::vector<size_t> pose_frames = AssociatePosesWithFrames(
+      external, arguments.trajectory, source->timestamps(), arguments.max_time_diff);
+
+  // Every check that can fail on the segmentation runs before the first frame.
+  std::string segmentation_description;
+  std::unique_ptr<Segmenter> segmenter = OpenSegmenter(arguments, &segmentation_description);
+  if (segmenter) {
+    std::vector<std::string> names;
+    for (size_t position : pose_frames) {
+      names.push_back(fs::path(source->image_paths()[position]).stem().string());
+    }
+    const PinholeCamera& camera = source->camera().camera;
+    segmenter->CheckFrames(names, cv::Size(camera.width, camera.height));
+  }
+
+  const fs::path out(arguments.out);
+  std::error_code error;
+  fs::create_directories(out, error);
+  if (!fs::is_directory(out)) ThrowFileError(out.string(), "cannot create the output folder");
+  std::ofstream kitti_file = OpenOutput((out / "poses_kitti.txt").string());
+  std::ofstream tum_file = OpenOutput((out / "poses_tum.txt").string());
+  std::ofstream csv_file = OpenOutput((out / "rescale.csv").string());
+  csv_file << RescaleCsvHeader() << '\n' << std::flush;
+
+  std::cout << "Input:      " << source->Describe() << '\n'
+            << "Trajectory: " << arguments.trajectory << " ("
+            << (format == TrajectoryFormat::kTum ? "TUM" : "KITTI") << ", " << external.size()
+            << " poses " << (external.HasTimestamps() ? "associated by time with" : "on")
+            << " frames " << pose_frames.front() << ".." << pose_frames.back() << " of "
+            << source->size() << ")\n"
+            << "Scale:      road plane, h0 = " << source->camera().h0 << " m, "
+            << arguments.detector << " features"
+            << (options.refine_motion ? ", motion refined on the tracks" : "") << '\n'
+            << "Segmentation: " << segmentation_description << '\n';
+  for (const std::string& note : source->notes()) std::cerr << "roadscale: note: " << note << '\n';
+
+  TrajectoryRescaler rescaler(source->camera().camera, external, pose_frames, options);
+  Trajectory rescaled;
+  std::map<RescaleStatus, int> counts;
+  double total_ms = 0.0;
+  RunTrajectoryRescaler(*source, segmenter.get(), rescaler, [&](const RescaledPose& pose) {
+    kitti_file << FormatKittiRow(pose.world_from_cam) << '\n' << std::flush;
+    tum_file << FormatTumRow(pose.timestamp, pose.world_from_cam) << '\n' << std::flush;
+    if (pose.status != RescaleStatus::kFirst) {
+      csv_file << FormatRescaleCsv(pose) << '\n' << std::flush;
+      ++counts[pose.status];
+      total_ms += pose.total_ms;
+    }
+    rescaled.world_from_cam.push_back(pose.world_from_cam);
+    rescaled.timestamps.push_back(pose.timestamp);
+  });
+
+  const size_t steps = external.size() - 1;
+  std::cout << "Steps:      " << steps << " (";
+  bool first = true;
+  for (const auto& [status, count] : counts) {
+    std::cout << (first ? "" : ", ") << count << ' ' << RescaleStatusName(status);
+    first = false;
+  }
+  std::cout << "), " << Fixed(total_ms / static_cast<double>(steps), 1) << " ms a step\n";
+  if (counts[RescaleStatus::kUnscaled] > 0) {
+    std::cerr << "roadscale: warning: no road plane was found in any step: the trajectory keeps "
+                 "the input's (unscaled) step lengths\n";
+  }
+  std::cout << "Poses:      " << (out / "poses_kitti.txt").string() << ", "
+            << (out / "poses_tum.txt").string() << '\n'
+            << "Steps:      " << (out / "rescale.csv").string() << '\n';
+
+  const Trajectory* ground_truth = source->ground_truth();
+  if (ground_truth == nullptr) return;
+  std::vector<Rigid3d> gt;
+  std::vector<Rigid3d> input;
+  for (size_t k = 0; k < pose_frames.size(); ++k) {
+    gt.push_back(ground_truth->world_from_cam[pose_frames[k]]);
+    input.push_back(external.world_from_cam[k]);
+  }
+  std::cout << "Against the ground truth (" << gt.size()
+            << " poses; t_err: KITTI metric on 100 m segments, their count in brackets):\n"
+            << "             length ratio     t_err 100 m   ATE se3 m  ATE sim3 m\n"
+            << SummaryLine("input", EvaluateTrajectory(gt, input))
+            << SummaryLine("rescaled", EvaluateTrajectory(gt, rescaled.world_from_cam));
+}
+
+}  // namespace
+
+void RegisterRescaleCommand(CLI::App& app) {
+  auto arguments = std::make_shared<RescaleArguments>();
+  CLI::App* command = app.add_subcommand(
+      "rescale",
+      "Give another visual odometry's trajectory (e.g. ORB-SLAM3 monocular: arbitrary, drifting "
+      "scale, keyframes only) its metric scale from the road plane. Its rotations and "
+      "translation directions are kept; for each pair of consecutive poses, features are tracked "
+      "between their frames and the road plane gives the step's length in metres. Writes, step "
+      "by step: OUT/poses_kitti.txt and OUT/poses_tum.txt (one row per input pose) and "
+      "OUT/rescale.csv (per step: frames, input and metric length, status, counts, times). "
+      "Prints length ratio, KITTI t_err and ATE when the sequence has ground truth.");
+  command
+      ->add_option("--trajectory", arguments->trajectory,
+                   "The other VO's trajectory (world_from_cam): TUM rows (timestamp tx ty tz qx "
+                   "qy qz qw) are associated with the frames by time, KITTI rows (12 numbers) "
+                   "are frames 0, 1, 2, ...")
+      ->required();
+  command->add_option("--format", arguments->format,
+                      "kitti or tum (default: from the number of numbers in a row)");
+  CLI::Option* kitti = command->add_option("--kitti", arguments->kitti,
+                                           "KITTI odometry sequence folder (.../sequences/NN)");
+  CLI::Option* images =
+      command->add_option("--images", arguments->images,
+                          "Folder of images (*.png, *.jpg) in natural order, with times.txt "
+                          "for timestamps (else 10 Hz)");
+  kitti->excludes(images);
+  command->add_option("--camera", arguments->camera,
+                      "Camera YAML (Camera: fx fy cx cy width height h0); required with --images");
+  CLI::Option* model = command->add_option(
+      "--model", arguments->model,
+      "Segmentation model YAML (e.g. config/models/espnetv2_512x256.yaml): road mask and "
+      "moving objects of every pose's frame (default: no segmentation)");
+  CLI::Option* labels =
+      command->add_option("--labels", arguments->labels,
+                          "Folder of label PNGs (Cityscapes train ids) named like the frames, "
+                          "e.g. a synthetic sequence's semantic/ (default: none)");
+  CLI::Option* no_segmentation = command->add_flag(
+      "--no-segmentation", arguments->no_segmentation,
+      "No segmentation: road points found by the geometric checks only (the default when "
+      "neither --model nor --labels is given)");
+  model->excludes(labels);
+  model->excludes(no_segmentation);
+  labels->excludes(no_segmentation);
+  command->add_option("--h0", arguments->h0,
+                      "Camera height above the road in metres (default: --camera's h0, the "
+                      "sequence's camera.yaml, else KITTI's 1.65)");
+  command
+      ->add_option("--max-time-diff", arguments->max_time_diff,
+                   "Largest difference in seconds between a pose's timestamp and its frame's")
+      ->capture_default_str();
+  command
+      ->add_option("--detector", arguments->detector,
+                   "Feature detector: sift (the paper's), orb, brisk, akaze or fast")
+      ->capture_default_str();
+  command->add_flag("--no-refine", arguments->no_refine,
+                    "Triangulate with the input's motion as it is, without refining it on the "
+                    "tracks (default: refined; the output keeps the input's motion either way)");
+  command->add_option("--out", arguments->out, "Output folder (created when missing)")->required();
+  command->callback([arguments, kitti, images] {
+    if (kitti->count() == 0 && images->count() == 0) {
+      throw Error("roadscale rescale needs --kitti SEQ_DIR or --images DIR");
+    }
+    if (images->count() > 0 && arguments->camera.empty()) {
+      throw Error("roadscale rescale --images needs --camera CAMERA.yaml");
+    }
+    RunRescale(*arguments);
+  });
+}
+
+}  // namespace roadscale::cli

@@ -1,0 +1,443 @@
+#include "roadscale/pipeline/trajectory_rescaler.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "roadscale/util/error.h"
+
+#include <Eigen/Geometry>
+
+namespace roadscale {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+double MillisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The VO's motion from pose a to pose b, as cur_from_prev.
+Rigid3d StepMotion(const Trajectory& trajectory, size_t b) {
+  return trajectory.world_from_cam[b].inverse() * trajectory.world_from_cam[b - 1];
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + middle, values.end());
+  return values[middle];
+}
+
+Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+std::string FormatTime(double seconds) {
+  std::ostringstream text;
+  text.precision(6);
+  text << seconds;
+  return text.str();
+}
+
+}  // namespace
+
+void TrajectoryRescalerOptions::Check() const {
+  scale.Check();
+  tracker.Check();
+  refinement.Check();
+  CheckOption(std::isfinite(max_refinement_rotation_deg) && max_refinement_rotation_deg >= 0.0,
+              "rescale.max_refinement_rotation_deg", "must be a non-negative number of degrees");
+  CheckOption(std::isfinite(max_refinement_direction_deg) && max_refinement_direction_deg >= 0.0,
+              "rescale.max_refinement_direction_deg", "must be a non-negative number of degrees");
+  CheckOption(std::isfinite(max_sampson_error_px) && max_sampson_error_px > 0.0,
+              "rescale.max_sampson_error_px", "must be a positive number of pixels");
+  CheckOption(
+      std::isfinite(stationary_fraction) && stationary_fraction >= 0.0 && stationary_fraction < 1.0,
+      "rescale.stationary_fraction", "must be in [0, 1)");
+}
+
+const char* RescaleStatusName(RescaleStatus status) {
+  switch (status) {
+    case RescaleStatus::kFirst:
+      return "first";
+    case RescaleStatus::kOk:
+      return "ok";
+    case RescaleStatus::kHeld:
+      return "held";
+    case RescaleStatus::kBeforeFirstScale:
+      return "before first scale";
+    case RescaleStatus::kStationary:
+      return "stationary";
+    case RescaleStatus::kUnscaled:
+      return "unscaled";
+  }
+  return "unknown";
+}
+
+std::vector<size_t> AssociatePosesWithFrames(const Trajectory& trajectory, const std::string& name,
+                                             const std::vector<double>& frame_timestamps,
+                                             double max_difference_s) {
+  if (trajectory.size() < 2) {
+    ThrowFileError(name, "has " + std::to_string(trajectory.size()) +
+                             " pose(s); rescaling needs at least 2 (one step)");
+  }
+  std::vector<size_t> frames;
+  frames.reserve(trajectory.size());
+  if (!trajectory.HasTimestamps()) {
+    if (trajectory.size() > frame_timestamps.size()) {
+      ThrowFileError(name, "has " + std::to_string(trajectory.size()) +
+                               " poses but there are only " +
+                               std::to_string(frame_timestamps.size()) +
+                               " frames; KITTI rows are frames 0, 1, 2, ... (for keyframes "
+                               "only, give a TUM file with timestamps)");
+    }
+    for (size_t k = 0; k < trajectory.size(); ++k) frames.push_back(k);
+    return frames;
+  }
+  if (!std::isfinite(max_difference_s) || max_difference_s < 0.0) {
+    throw Error("invalid option max_time_diff: must be a non-negative number of seconds");
+  }
+  if (frame_timestamps.empty()) ThrowFileError(name, "there are no frames to associate with");
+  for (size_t k = 0; k < trajectory.size(); ++k) {
+    const double t = trajectory.timestamps[k];
+    // The nearest frame: the first at or after t, or the one before it (on a tie too).
+    size_t best =
+        static_cast<size_t>(std::lower_bound(frame_timestamps.begin(), frame_timestamps.end(), t) -
+                            frame_timestamps.begin());
+    if (best == frame_timestamps.size() ||
+        (best > 0 && t - frame_timestamps[best - 1] <= frame_timestamps[best] - t)) {
+      best = best > 0 ? best - 1 : 0;
+    }
+    const double difference = std::abs(frame_timestamps[best] - t);
+    if (!(difference <= max_difference_s)) {
+      ThrowFileError(name, "pose " + std::to_string(k) + " (timestamp " + FormatTime(t) +
+                               " s) matches no frame: the nearest frame, " + std::to_string(best) +
+                               ", is at " + FormatTime(frame_timestamps[best]) + " s (more than " +
+                               FormatTime(max_difference_s) + " s away; frames span " +
+                               FormatTime(frame_timestamps.front()) + " to " +
+                               FormatTime(frame_timestamps.back()) + " s)");
+    }
+    if (!frames.empty() && best <= frames.back()) {
+      ThrowFileError(name, "poses " + std::to_string(k - 1) + " and " + std::to_string(k) +
+                               " (timestamps " + FormatTime(trajectory.timestamps[k - 1]) +
+                               " and " + FormatTime(t) + " s) match frames " +
+                               std::to_string(frames.back()) + " and " + std::to_string(best) +
+                               "; expected one pose per frame, in increasing time");
+    }
+    frames.push_back(best);
+  }
+  return frames;
+}
+
+TrajectoryRescaler::TrajectoryRescaler(const PinholeCamera& camera, const Trajectory& external,
+                                       std::vector<size_t> pose_frames,
+                                       const TrajectoryRescalerOptions& options)
+    : camera_(camera),
+      external_(external),
+      pose_frames_(std::move(pose_frames)),
+      options_(options),
+      estimator_(camera,
+                 [&options] {
+                   ScaleEstimatorOptions scale = options.scale;
+                   scale.use_filter = false;  // the ratio is filtered here instead
+                   return scale;
+                 }()),
+      ratio_filter_(options.scale.filter),
+      tracker_(options.tracker) {
+  options_.Check();
+  if (external_.size() < 2) {
+    throw Error("rescaling needs a trajectory of at least 2 poses, got " +
+                std::to_string(external_.size()));
+  }
+  if (pose_frames_.size() != external_.size()) {
+    throw Error("rescaling: " + std::to_string(external_.size()) + " poses but " +
+                std::to_string(pose_frames_.size()) + " pose frames");
+  }
+  for (size_t k = 1; k < pose_frames_.size(); ++k) {
+    if (pose_frames_[k] <= pose_frames_[k - 1]) {
+      throw Error("rescaling: the frames of poses " + std::to_string(k - 1) + " and " +
+                  std::to_string(k) + " are not increasing");
+    }
+  }
+  std::vector<double> lengths;
+  for (size_t b = 1; b < external_.size(); ++b) {
+    const double length = StepMotion(external_, b).translation().norm();
+    if (!std::isfinite(length)) {
+      throw Error("rescaling: pose " + std::to_string(b) + " of the trajectory is not finite");
+    }
+    if (length > 0.0) lengths.push_back(length);
+  }
+  reference_step_length_ = Median(lengths);
+  next_frame_ = pose_frames_.front();
+  last_world_from_cam_ = external_.world_from_cam.front();
+}
+
+bool TrajectoryRescaler::IsPoseFrame(size_t position) const {
+  return std::binary_search(pose_frames_.begin(), pose_frames_.end(), position);
+}
+
+std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
+                                                       const SegmentationResult& segmentation,
+                                                       double segmentation_ms, double read_ms) {
+  if (next_pose_ >= pose_frames_.size()) {
+    throw Error("rescaling: frame " + std::to_string(frame.index) +
+                " comes after the trajectory's last pose");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const size_t position = next_frame_;
+  const bool pose_frame = position == pose_frames_[next_pose_];
+  const cv::Mat no_mask;
+  std::vector<RescaledPose> finished;
+
+  if (next_pose_ == 0) {
+    tracker_.Track(static_cast<int>(position), frame.image, segmentation.dynamic_mask);
+    tracker_.Detect(segmentation.static_mask, /*force=*/true);
+    prev_road_mask_ = segmentation.road_mask.clone();
+    prev_pose_frame_index_ = frame.index;
+    RescaledPose first;
+    first.frame = first.prev_frame = frame.index;
+    first.timestamp = frame.timestamp;
+    first.world_from_cam = last_world_from_cam_;
+    first.segmentation_ms = segmentation_ms;
+    first.total_ms = segmentation_ms + read_ms + MillisecondsSince(start);
+    finished.push_back(first);
+    ++next_pose_;
+    ++next_frame_;
+    return finished;
+  }
+
+  // The VO's rotation of this step, spread evenly over its frames, predicts each frame's.
+  Eigen::Matrix3d prediction = Eigen::Matrix3d::Identity();
+  if (options_.predict_with_rotation) {
+    const Eigen::AngleAxisd step_rotation(
+        NearestRotation(StepMotion(external_, next_pose_).linear()));
+    const double frames =
+        static_cast<double>(pose_frames_[next_pose_] - pose_frames_[next_pose_ - 1]);
+    const Eigen::Matrix3d per_frame =
+        Eigen::AngleAxisd(step_rotation.angle() / frames, step_rotation.axis()).toRotationMatrix();
+    prediction = camera_.K() * per_frame * camera_.K().inverse();
+  }
+  tracker_.Track(static_cast<int>(position), frame.image,
+                 pose_frame ? segmentation.dynamic_mask : no_mask, prediction);
+  step_tracking_ms_ += tracker_.stats().pyramid_ms + tracker_.stats().tracking_ms;
+  ++next_frame_;
+  if (!pose_frame) {
+    step_total_ms_ += read_ms + MillisecondsSince(start);
+    return finished;
+  }
+
+  RescaledPose step = MeasureStep(next_pose_);
+  step.frame = frame.index;
+  step.prev_frame = prev_pose_frame_index_;
+  prev_pose_frame_index_ = frame.index;
+  step.timestamp = frame.timestamp;
+  step.segmentation_ms = segmentation_ms;
+  step.tracking_ms = step_tracking_ms_;
+  tracker_.Detect(segmentation.static_mask, options_.detect_every_pose);
+  step.detection_ms = tracker_.stats().detection_ms;
+  prev_road_mask_ = segmentation.road_mask.clone();
+  step.total_ms = step_total_ms_ + segmentation_ms + read_ms + MillisecondsSince(start);
+  step_tracking_ms_ = 0.0;
+  step_total_ms_ = 0.0;
+  ++next_pose_;
+
+  if (!has_ratio_) {
+    pending_.push_back(std::move(step));
+    return finished;  // nothing to scale with yet
+  }
+  if (!pending_.empty()) {
+    // The first road plane: the steps before it take its ratio.
+    while (!pending_.empty()) {
+      RescaledPose waiting = std::move(pending_.front());
+      pending_.pop_front();
+      if (waiting.status != RescaleStatus::kStationary) {
+        waiting.status = RescaleStatus::kBeforeFirstScale;
+      }
+      finished.push_back(Emit(std::move(waiting)));
+    }
+  }
+  finished.push_back(Emit(std::move(step)));
+  return finished;
+}
+
+RescaledPose TrajectoryRescaler::MeasureStep(size_t pose) {
+  const auto start = std::chrono::steady_clock::now();
+  RescaledPose step;
+  step.pose = pose;
+  const Rigid3d b_from_a = StepMotion(external_, pose);
+  step.external_length = b_from_a.translation().norm();
+  step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
+
+  const size_t frame_a = pose_frames_[pose - 1];
+  std::vector<int64_t> ids;
+  std::vector<Eigen::Vector2d> prev_pixels;
+  std::vector<Eigen::Vector2d> cur_pixels;
+  for (const Track& track : tracker_.tracks()) {
+    if (track.first_frame > static_cast<int>(frame_a)) continue;
+    ids.push_back(track.id);
+    prev_pixels.push_back(track.pixels[frame_a - static_cast<size_t>(track.first_frame)]);
+    cur_pixels.push_back(track.pixels.back());
+  }
+  step.num_tracks = static_cast<int>(ids.size());
+
+  if (!(step.external_length > options_.stationary_fraction * reference_step_length_)) {
+    step.status = RescaleStatus::kStationary;
+    step.scale_ms = MillisecondsSince(start);
+    return step;
+  }
+
+  Eigen::Matrix3d rotation = NearestRotation(b_from_a.linear());
+  Eigen::Vector3d direction = b_from_a.translation() / step.external_length;
+  std::vector<Eigen::Vector2d> prev_normalized;
+  std::vector<Eigen::Vector2d> cur_normalized;
+  prev_normalized.reserve(ids.size());
+  cur_normalized.reserve(ids.size());
+  for (size_t i = 0; i < ids.size(); ++i) {
+    prev_normalized.push_back(camera_.Unproject(prev_pixels[i]).head<2>());
+    cur_normalized.push_back(camera_.Unproject(cur_pixels[i]).head<2>());
+  }
+  // Five unknowns: fewer tracks than a handful fit anything.
+  constexpr size_t kMinRefinementTracks = 20;
+  if (options_.refine_motion && ids.size() >= kMinRefinementTracks) {
+    const SampsonRefinementResult refined = RefineRelativePoseSampson(
+        rotation, direction, prev_normalized, cur_normalized, camera_.fx, options_.refinement);
+    step.refinement_rotation_deg =
+        RotationAngle(refined.rotation * rotation.transpose()) * kRadToDeg;
+    step.refinement_direction_deg =
+        std::acos(std::clamp(refined.direction.normalized().dot(direction), -1.0, 1.0)) * kRadToDeg;
+    if (step.refinement_rotation_deg <= options_.max_refinement_rotation_deg &&
+        step.refinement_direction_deg <= options_.max_refinement_direction_deg) {
+      rotation = refined.rotation;
+      direction = refined.direction.normalized();
+      step.refined = true;
+    }
+  }
+
+  const Eigen::Matrix3d essential = Skew(direction) * rotation;
+  std::vector<Eigen::Vector2d> kept_prev;
+  std::vector<Eigen::Vector2d> kept_cur;
+  std::vector<int64_t> outliers;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    if (SampsonErrorPx(essential, prev_normalized[i], cur_normalized[i], camera_.fx) <=
+        options_.max_sampson_error_px) {
+      kept_prev.push_back(prev_pixels[i]);
+      kept_cur.push_back(cur_pixels[i]);
+    } else {
+      outliers.push_back(ids[i]);
+    }
+  }
+  step.num_pairs = static_cast<int>(kept_prev.size());
+  // Only a motion the tracks agree with may end tracks: with the VO's unrefined motion a
+  // few tenths of a degree off, good tracks far from the epipole would go too.
+  if (step.refined) tracker_.Drop(outliers);
+
+  step.estimate =
+      estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), prev_road_mask_);
+  if (step.estimate.status == ScaleStatus::kOk) {
+    step.raw_ratio = step.estimate.raw_scale / step.external_length;
+    ratio_ = options_.scale.use_filter ? ratio_filter_.Add(step.raw_ratio) : step.raw_ratio;
+    has_ratio_ = true;
+    step.status = RescaleStatus::kOk;
+  } else {
+    step.status = RescaleStatus::kHeld;
+    step.detail = ScaleStatusName(step.estimate.status);
+  }
+  step.scale_ms = MillisecondsSince(start);
+  return step;
+}
+
+RescaledPose TrajectoryRescaler::Emit(RescaledPose step) {
+  const Rigid3d b_from_a = StepMotion(external_, step.pose);
+  step.ratio = step.status == RescaleStatus::kUnscaled ? 1.0 : ratio_;
+  step.metric_length =
+      step.status == RescaleStatus::kStationary ? 0.0 : step.ratio * step.external_length;
+  const Eigen::Vector3d translation =
+      step.external_length > 0.0
+          ? Eigen::Vector3d(b_from_a.translation() / step.external_length * step.metric_length)
+          : Eigen::Vector3d::Zero();
+  const Rigid3d metric_b_from_a = MakeRigid3d(NearestRotation(b_from_a.linear()), translation);
+  last_world_from_cam_ = last_world_from_cam_ * metric_b_from_a.inverse();
+  step.world_from_cam = last_world_from_cam_;
+  return step;
+}
+
+std::vector<RescaledPose> TrajectoryRescaler::Finish() {
+  if (next_pose_ < pose_frames_.size()) {
+    throw Error("rescaling: the frames ended at position " + std::to_string(next_frame_) +
+                ", before the frame of the trajectory's last pose (" +
+                std::to_string(pose_frames_.back()) + ")");
+  }
+  std::vector<RescaledPose> finished;
+  while (!pending_.empty()) {
+    RescaledPose waiting = std::move(pending_.front());
+    pending_.pop_front();
+    if (waiting.status != RescaleStatus::kStationary) waiting.status = RescaleStatus::kUnscaled;
+    finished.push_back(Emit(std::move(waiting)));
+  }
+  return finished;
+}
+
+void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
+                           TrajectoryRescaler& rescaler,
+                           const std::function<void(const RescaledPose&)>& on_pose) {
+  if (rescaler.last_frame() >= source.size()) {
+    throw Error("rescaling: the trajectory's last pose is at frame position " +
+                std::to_string(rescaler.last_frame()) + " but the input has " +
+                std::to_string(source.size()) + " frames");
+  }
+  const SegmentationResult no_segmentation;
+  for (size_t position = rescaler.first_frame(); position <= rescaler.last_frame(); ++position) {
+    const auto start = std::chrono::steady_clock::now();
+    const Frame frame = source.Read(position);
+    const double read_ms = MillisecondsSince(start);
+    SegmentationResult segmentation;
+    double segmentation_ms = 0.0;
+    if (segmenter != nullptr && rescaler.IsPoseFrame(position)) {
+      const auto segmentation_start = std::chrono::steady_clock::now();
+      segmentation =
+          segmenter->Segment(frame.image, std::filesystem::path(frame.path).stem().string());
+      segmentation_ms = MillisecondsSince(segmentation_start);
+    }
+    for (const RescaledPose& pose :
+         rescaler.AddFrame(frame, segmenter != nullptr ? segmentation : no_segmentation,
+                           segmentation_ms, read_ms)) {
+      on_pose(pose);
+    }
+  }
+  for (const RescaledPose& pose : rescaler.Finish()) on_pose(pose);
+}
+
+std::string RescaleCsvHeader() {
+  return "pose,frame_a,frame_b,timestamp,status,detail,external_length,raw_ratio,ratio,"
+         "metric_length,tracks,pairs,refined,refinement_rotation_deg,refinement_direction_deg,"
+         "triangulated,preselected,after_vote,after_road_model,ransac_inliers,plane_h,"
+         "segmentation_ms,tracking_ms,detection_ms,scale_ms,total_ms";
+}
+
+std::string FormatRescaleCsv(const RescaledPose& pose) {
+  std::ostringstream row;
+  row.precision(9);
+  const ScaleEstimate& e = pose.estimate;
+  row << pose.pose << ',' << pose.prev_frame << ',' << pose.frame << ',' << pose.timestamp << ",\""
+      << RescaleStatusName(pose.status) << "\",\"" << pose.detail << "\"," << pose.external_length
+      << ',' << pose.raw_ratio << ',' << pose.ratio << ',' << pose.metric_length << ','
+      << pose.num_tracks << ',' << pose.num_pairs << ',' << (pose.refined ? 1 : 0) << ','
+      << pose.refinement_rotation_deg << ',' << pose.refinement_direction_deg << ','
+      << e.num_triangulated << ',' << e.num_preselected << ',' << e.num_after_vote << ','
+      << e.num_after_road_model << ',' << e.num_ransac_inliers << ',';
+  if (pose.status == RescaleStatus::kOk) row << e.plane.height;
+  row.precision(4);
+  row << ',' << pose.segmentation_ms << ',' << pose.tracking_ms << ',' << pose.detection_ms << ','
+      << pose.scale_ms << ',' << pose.total_ms;
+  return row.str();
+}
+
+}  // namespace roadscale

@@ -1,0 +1,212 @@
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "roadscale/frontend/feature_tracker.h"
+#include "roadscale/frontend/sampson_refinement.h"
+#include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/geometry/rigid3.h"
+#include "roadscale/io/frame_source.h"
+#include "roadscale/io/trajectory_io.h"
+#include "roadscale/scale/scale_estimator.h"
+#include "roadscale/scale/scale_filter.h"
+#include "roadscale/segmentation/segmenter.h"
+
+namespace roadscale {
+
+// `roadscale rescale`: the scale module serving another visual odometry (the paper's claim 2).
+// Another VO's trajectory (ORB-SLAM3 monocular, DSO, ...) is right up to a scale that is
+// unknown and drifts. For each pair of consecutive poses a < b, the rescaler tracks features
+// from frame a to frame b (through the frames in between when the VO gives keyframes only),
+// takes the VO's relative motion b_from_a (rotation and translation DIRECTION only), and runs
+// the road-plane scale estimator of section III on the tracks: h0 / h is the step's length in
+// metres. The output keeps every rotation and translation direction of the VO and replaces
+// each step's length.
+//
+// What is filtered is the ratio metres / VO unit of each step, not the step length: a VO's
+// scale drifts slowly, while step lengths change with speed and with the (irregular) spacing
+// of keyframes. A step without a road plane keeps the last filtered ratio (flagged "held"),
+// so a VO's own scale drift carries the trajectory over road-less stretches.
+
+struct TrajectoryRescalerOptions {
+  // Camera height above the road (scale.camera_height, h0) and every threshold of section III.
+  // scale.use_filter and scale.filter apply to the ratio described above; the estimator
+  // itself runs unfiltered.
+  ScaleEstimatorOptions scale;
+  // KLT tracking and grid detection, as in the frontend.
+  FeatureTrackerOptions tracker;
+  // Detect new features (topping up the grid cells) at every pose, not only when the tracks
+  // run low: the road right in front of the car leaves the image within a few frames, and
+  // the scale needs its points in every step.
+  bool detect_every_pose = true;
+  // Start KLT in each frame between two poses where the VO's rotation (spread evenly over
+  // those frames) moves each point.
+  bool predict_with_rotation = true;
+
+  // Refine the VO's rotation and direction on this step's tracks (5 degrees of freedom,
+  // robust Sampson error) before triangulating. Another program's relative motion is rarely
+  // as precise as the images' own geometry: on KITTI the ground truth's direction moves by
+  // about 1 degree when refined (../shared/KITTI-NOTES.md), and a 0.035 degree rotation error
+  // moves a point at 10 m by 4 % of its depth. The refined motion is only used to triangulate;
+  // the output keeps the VO's motion.
+  bool refine_motion = true;
+  SampsonRefinementOptions refinement = [] {
+    SampsonRefinementOptions options;
+    options.loss = SampsonRefinementOptions::Loss::kCauchy;  // the tracks still hold outliers
+    return options;
+  }();
+  // A refinement that turns the rotation or the direction further than this (degrees) from
+  // the VO's is not used (a false minimum, or too few good tracks): the VO's motion is.
+  double max_refinement_rotation_deg = 1.0;
+  double max_refinement_direction_deg = 5.0;
+  // Tracks whose Sampson error under the (refined) motion exceeds this many pixels are left
+  // out of the scale estimate and ended: moving objects and drifting tracks.
+  double max_sampson_error_px = 1.0;
+
+  // A step whose VO translation is shorter than this fraction of the median (non-zero) step
+  // of the whole trajectory is stationary: its metric length stays 0.
+  double stationary_fraction = 0.01;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+enum class RescaleStatus {
+  kFirst,             // the first pose: kept as the VO gives it
+  kOk,                // scaled by this step's road plane
+  kHeld,              // no road plane in this step: the last ratio (see `detail`)
+  kBeforeFirstScale,  // before the first road plane: the first ratio, known later
+  kStationary,        // the VO did not move: the step stays 0
+  kUnscaled,          // no road plane in the whole trajectory: the VO's length kept
+};
+
+// "first", "ok", "held", "before first scale", "stationary", "unscaled".
+const char* RescaleStatusName(RescaleStatus status);
+
+// One pose of the metric trajectory and the step that led to it (from the previous pose).
+struct RescaledPose {
+  size_t pose = 0;         // index in the VO's trajectory
+  size_t frame = 0;        // frame b of the step (Frame::index)
+  size_t prev_frame = 0;   // frame a of the step (== frame for the first pose)
+  double timestamp = 0.0;  // frame b's timestamp
+  RescaleStatus status = RescaleStatus::kFirst;
+  // Why a held step has no road plane ("held: too few points", "held: degenerate").
+  std::string detail;
+
+  double external_length = 0.0;  // |translation| of the VO's b_from_a, in its units
+  // This step's own ratio (metres per VO unit; NaN without a road plane), and the ratio
+  // applied (filtered or held).
+  double raw_ratio = 0.0;
+  double ratio = 0.0;
+  double metric_length = 0.0;  // ratio * external_length, 0 when stationary
+
+  int num_tracks = 0;    // tracks followed from frame a to frame b
+  int num_pairs = 0;     // of those, within max_sampson_error_px: given to the estimator
+  bool refined = false;  // the refined motion was used for triangulation
+  double refinement_rotation_deg = 0.0;   // how far the refinement moved the VO's motion
+  double refinement_direction_deg = 0.0;  // (0 without refinement)
+  ScaleEstimate estimate;                 // counts after each stage of the scale estimator
+
+  // Milliseconds: segmentation of frame b, KLT over the frames a+1..b, detection in frame
+  // b, refinement + scale estimate, and the whole step (frame reading included).
+  double segmentation_ms = 0.0;
+  double tracking_ms = 0.0;
+  double detection_ms = 0.0;
+  double scale_ms = 0.0;
+  double total_ms = 0.0;
+
+  Rigid3d world_from_cam = Rigid3d::Identity();  // the metric pose of frame b
+};
+
+// The frame (position in the source's frames) of each pose of `trajectory`. With timestamps
+// (a TUM file): the frame whose timestamp is nearest, within max_difference_s. Without (KITTI
+// rows): pose i is frame i. `name` (the trajectory's file) is for the messages. Throws Error
+// when a pose matches no frame, when two poses match the same frame or come out of order,
+// when there are more poses than frames (KITTI rows), or when there are fewer than 2 poses.
+std::vector<size_t> AssociatePosesWithFrames(const Trajectory& trajectory, const std::string& name,
+                                             const std::vector<double>& frame_timestamps,
+                                             double max_difference_s = 0.01);
+
+// Rescales one trajectory, frame by frame. Frames come in order through AddFrame; finished
+// poses come out in order. Poses before the first road plane wait until it is found (they are
+// then scaled by its ratio), so output may lag behind input at the start.
+class TrajectoryRescaler {
+ public:
+  // `pose_frames[k]` is the position, among the source's frames, of `external` pose k,
+  // strictly increasing (see AssociatePosesWithFrames). options.scale.camera_height is h0.
+  // The metric trajectory starts at the VO's first pose. Throws Error on invalid options or
+  // camera, or mismatched inputs.
+  TrajectoryRescaler(const PinholeCamera& camera, const Trajectory& external,
+                     std::vector<size_t> pose_frames, const TrajectoryRescalerOptions& options);
+
+  // The frames the rescaler reads (positions): pose_frames.front() .. pose_frames.back(),
+  // every one.
+  size_t first_frame() const { return pose_frames_.front(); }
+  size_t last_frame() const { return pose_frames_.back(); }
+  // Whether the frame at `position` is a pose's frame (segment those frames, and only those).
+  bool IsPoseFrame(size_t position) const;
+  // The position AddFrame expects next.
+  size_t next_frame() const { return next_frame_; }
+
+  // Processes the next frame (positions first_frame(), first_frame() + 1, ...):
+  // `frame.image` grey CV_8UC1 of the camera's size; `segmentation` that frame's masks for a pose
+  // frame (empty masks = no segmentation; ignored for the frames in between); `segmentation_ms` and
+  // `read_ms` for the records. Returns the poses finished by this frame (none, one, or several at
+  // once when the first road plane arrives). Throws Error on a frame out of order or a bad image.
+  std::vector<RescaledPose> AddFrame(const Frame& frame, const SegmentationResult& segmentation,
+                                     double segmentation_ms = 0.0, double read_ms = 0.0);
+
+  // After the last frame: the poses still waiting for a first road plane, as kUnscaled (the
+  // VO's own lengths). Empty when a road plane was found.
+  std::vector<RescaledPose> Finish();
+
+  // True once a road plane has given a ratio.
+  bool has_ratio() const { return has_ratio_; }
+
+ private:
+  RescaledPose MeasureStep(size_t pose);
+  // Applies `ratio` to the step and chains its pose onto the last emitted one.
+  RescaledPose Emit(RescaledPose step);
+
+  PinholeCamera camera_;
+  Trajectory external_;
+  std::vector<size_t> pose_frames_;
+  TrajectoryRescalerOptions options_;
+  ScaleEstimator estimator_;
+  ScaleFilter ratio_filter_;
+  FeatureTracker tracker_;
+  double reference_step_length_ = 0.0;  // median non-zero VO step length
+
+  size_t next_frame_ = 0;
+  size_t next_pose_ = 0;              // the pose whose frame comes next
+  cv::Mat prev_road_mask_;            // road mask of the last pose's frame
+  size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
+  bool has_ratio_ = false;
+  double ratio_ = 0.0;                // the last filtered ratio
+  std::deque<RescaledPose> pending_;  // steps waiting for the first ratio
+  Rigid3d last_world_from_cam_ = Rigid3d::Identity();
+  // Accumulated over the frames of the current step.
+  double step_tracking_ms_ = 0.0;
+  double step_total_ms_ = 0.0;
+};
+
+// Reads `source`'s frames first_frame() .. last_frame() (the others are not decoded),
+// segments the pose frames with `segmenter` (nullptr: no segmentation; the frame's file stem
+// is its name), feeds `rescaler`, and calls `on_pose` for each finished pose in order,
+// including those Finish() returns.
+void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
+                           TrajectoryRescaler& rescaler,
+                           const std::function<void(const RescaledPose&)>& on_pose);
+
+// The header and one row of OUT/rescale.csv (one row per step, i.e. per pose after the
+// first).
+std::string RescaleCsvHeader();
+std::string FormatRescaleCsv(const RescaledPose& pose);
+
+}  // namespace roadscale
