@@ -65,8 +65,15 @@ double PiecewiseLinear::Integral(double u) const {
   return cumulative_[i] + 0.5 * (value_[i] + v) * (u - u_[i]);
 }
 
-CentreLine::CentreLine(const std::vector<RoadPiece>& pieces) : pieces_(pieces) {
+CentreLine::CentreLine(const std::vector<RoadPiece>& pieces, const RoadCrown& crown)
+    : pieces_(pieces), crown_(crown) {
   if (pieces.empty()) throw Error("a road needs at least one piece");
+  const double half_width = 0.5 * (crown.l_left - crown.l_right);
+  if (crown.slope != 0.0 && half_width > 0.0) {
+    crown_curvature_ = crown.slope / (2.0 * half_width);
+    // The apex at the carriageway's middle: at l = 0 the road rises towards it.
+    crown_bank_ = std::atan(2.0 * crown_curvature_ * 0.5 * (crown.l_left + crown.l_right));
+  }
   // Knots of the three profiles; every piece's start and end of transition.
   std::vector<double> knots = {0.0};
   double u = 0.0;
@@ -150,7 +157,7 @@ RoadFrame CentreLine::FrameAt(double u) const {
   frame.heading = Heading(u);
   frame.curvature = curvature_.Value(u);
   frame.grade = grade_.Value(u);
-  frame.bank = bank_.Value(u);
+  frame.bank = bank_.Value(u) + crown_bank_;
 
   Eigen::Vector2d xy;
   if (u <= 0.0) {
@@ -175,8 +182,7 @@ RoadFrame CentreLine::FrameAt(double u) const {
 }
 
 Eigen::Vector3d CentreLine::SurfacePoint(double u, double l) const {
-  const RoadFrame frame = FrameAt(u);
-  return frame.point + l * frame.lateral;
+  return SurfacePoint(FrameAt(u), l);
 }
 
 }  // namespace roadscale::synth

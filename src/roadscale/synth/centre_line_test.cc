@@ -86,5 +86,24 @@ TEST(CentreLine, FrameIsOrthonormalAndBanked) {
   EXPECT_NEAR(du.normalized().dot(f.normal), 0.0, 1e-8);
 }
 
+TEST(CentreLine, CrownFallsToBothEdgesFromTheMiddle) {
+  // Carriageway from l = -4 to l = 6: apex at l = 1, 2 % cross fall at the edges.
+  const CentreLine line({{100.0, 0.0, 0.0, 0.0, 0.0}}, RoadCrown{0.02, -4.0, 6.0});
+  auto height = [&](double l) { return line.SurfacePoint(50.0, l).z(); };
+  EXPECT_GT(height(1.0), height(0.9));
+  EXPECT_GT(height(1.0), height(1.1));
+  EXPECT_NEAR((height(6.0) - height(5.99)) / 0.01, -0.02, 1e-3);
+  EXPECT_NEAR((height(-3.99) - height(-4.0)) / 0.01, 0.02, 1e-3);
+  // Beyond the edges the surface keeps the edge's offset from the tangent plane.
+  EXPECT_DOUBLE_EQ(line.CrownOffset(9.0), line.CrownOffset(6.0));
+  // At l = 0 the frame is the tangent plane: no offset, no slope along the lateral.
+  EXPECT_EQ(line.CrownOffset(0.0), 0.0);
+  const RoadFrame f = line.FrameAt(50.0);
+  const Eigen::Vector3d dl =
+      (line.SurfacePoint(50.0, 1e-5) - line.SurfacePoint(50.0, -1e-5)) / 2e-5;
+  EXPECT_NEAR(dl.dot(f.normal), 0.0, 1e-9);
+  EXPECT_NEAR(f.bank, std::atan(0.02 / 5.0 * 1.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace roadscale::synth

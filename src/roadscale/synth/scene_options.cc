@@ -37,6 +37,8 @@ void RoadOptions::Check() const {
   CheckNonNegative(sidewalk_width, "Road.sidewalk_width");
   CheckNonNegative(verge_width, "Road.verge_width");
   CheckNonNegative(ground_width, "Road.ground_width");
+  CheckOption(std::isfinite(crown_slope) && crown_slope >= 0.0 && crown_slope <= 0.08,
+              "Road.crown_slope", "must lie in [0, 0.08]");
   CheckPositive(straight_min, "Road.straight_min");
   CheckRange(straight_min, straight_max, "Road.straight_min/max");
   CheckPositive(radius_min, "Road.radius_min");
@@ -193,6 +195,7 @@ SceneOptions PresetSceneOptions(const std::string& name) {
     road.verge_width = 4.0;
     road.ground_width = 50.0;
     road.paved_ground = false;
+    road.crown_slope = 0.0;  // each carriageway drains to one side; not modelled
     road.straight_min = 300.0;
     road.straight_max = 700.0;
     road.radius_min = 700.0;

@@ -26,6 +26,7 @@ struct RoadOptions {
   double verge_width = 0.0;     // grass between the sidewalk and the ground beyond
   double ground_width = 30.0;   // ground beyond the verge (paved in towns, grass elsewhere)
   bool paved_ground = true;     // false: the ground beyond the verge is grass (terrain)
+  double crown_slope = 0.02;    // cross fall of the carriageway to both edges (camber)
 
   // Generator of the centre line (used when `pieces` is empty).
   double straight_min = 40.0, straight_max = 120.0;  // metres

@@ -131,6 +131,7 @@ void ReadRoad(Block& b, RoadOptions* o, const std::string& path) {
   b.Get("verge_width", &o->verge_width);
   b.Get("ground_width", &o->ground_width);
   b.Get("paved_ground", &o->paved_ground);
+  b.Get("crown_slope", &o->crown_slope);
   b.Get("straight_min", &o->straight_min);
   b.Get("straight_max", &o->straight_max);
   b.Get("radius_min", &o->radius_min);

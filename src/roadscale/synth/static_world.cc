@@ -99,7 +99,7 @@ class WorldBuilder {
   double Edge(int side) const { return side > 0 ? layout_.left_edge : -layout_.right_edge; }
 
   Eigen::Vector3d Ground(const RoadFrame& frame, double l) const {
-    return frame.point + l * frame.lateral + Kerb() * frame.normal;
+    return line_.SurfacePoint(frame, l, Kerb());
   }
 
   bool Clear(const Eigen::Vector3d& p, double margin) const {
@@ -177,9 +177,9 @@ class WorldBuilder {
           const double max_width = a0.style->label == label::kRoad ? 1.0 : 3.0;
           const int parts = static_cast<int>(
               std::ceil(std::max(std::abs(b0.l - a0.l), std::abs(b1.l - a1.l)) / max_width));
-          auto at = [](const RoadFrame& f, const Point& a, const Point& b, double k) {
+          auto at = [this](const RoadFrame& f, const Point& a, const Point& b, double k) {
             const double l = a.l + k * (b.l - a.l), h = a.h + k * (b.h - a.h);
-            return Eigen::Vector3d(f.point + l * f.lateral + h * f.normal);
+            return line_.SurfacePoint(f, l, h);
           };
           for (int j = 0; j < std::max(1, parts); ++j) {
             const double k0 = static_cast<double>(j) / std::max(1, parts);
@@ -196,7 +196,7 @@ class WorldBuilder {
           const double m = layout_.median_centre;
           const double half = 0.25, height = 0.85;
           auto at = [&](const RoadFrame& f, double l, double h) {
-            return Eigen::Vector3d(f.point + l * f.lateral + h * f.normal);
+            return line_.SurfacePoint(f, l, h);
           };
           for (int side : {-1, 1}) {
             const double l = m + side * half;
@@ -224,8 +224,8 @@ class WorldBuilder {
       if (layout_.has_median && i % 4 == 0) {
         const Eigen::Matrix3d axes = HorizontalAxes(frame);
         for (double l : {layout_.right_edge - 0.6, layout_.left_edge + 0.6}) {
-          ChunkAt(u).AddBox(frame.point + l * frame.lateral - 0.2 * frame.normal, axes, 0.12, 0.12,
-                            0.95, &rail, &rail);
+          ChunkAt(u).AddBox(line_.SurfacePoint(frame, l, -0.2), axes, 0.12, 0.12, 0.95, &rail,
+                            &rail);
         }
       }
       previous = std::move(current);
@@ -421,7 +421,7 @@ class WorldBuilder {
       axes.col(0) = forward;
       axes.col(2) = frame.normal;
       axes.col(1) = frame.normal.cross(forward);
-      const Eigen::Vector3d position = frame.point + l * frame.lateral;
+      const Eigen::Vector3d position = line_.SurfacePoint(frame, l);
       ChunkAt(uc).Append(Transformed(MakeCar(shape, paint, variant), axes, position));
       if (options_.texture.shadows) {
         const Eigen::Vector2d offset = ShadowOffset(line_, uc, 0.8 * shape.height, sun_);

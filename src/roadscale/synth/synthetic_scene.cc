@@ -45,8 +45,9 @@ SyntheticScene::SyntheticScene(const SceneOptions& options, int frames)
       pieces.push_back(rest);
     }
   }
-  line_ = std::make_unique<CentreLine>(pieces);
   layout_ = MakeLateralLayout(options_.road);
+  line_ = std::make_unique<CentreLine>(
+      pieces, RoadCrown{options_.road.crown_slope, layout_.right_edge, layout_.left_edge});
   const double u_begin = -30.0;
   index_ = std::make_unique<RoadIndex>(*line_, u_begin - 60.0, u_end + 60.0);
 

@@ -147,7 +147,7 @@ void Traffic::Collect(double time, double u_min, double u_max, std::vector<Actor
     axes.col(1) = frame.normal.cross(forward);
     ActorPose pose;
     pose.mesh = &car.mesh;
-    pose.world_from_mesh = MakeRigid3d(axes, frame.point + l * frame.lateral);
+    pose.world_from_mesh = MakeRigid3d(axes, line_.SurfacePoint(frame, l));
     // The lead car replays the ego's motion: it stands when the ego stood.
     pose.moving = car.kind != Kind::kLead || ego_.StateAt(time + lead_delay_).speed > 0.0;
     poses->push_back(pose);
@@ -181,8 +181,7 @@ void Traffic::Collect(double time, double u_min, double u_max, std::vector<Actor
     ActorPose pose;
     pose.mesh = &scratch->back();
     pose.moving = walker.speed != 0.0;
-    pose.world_from_mesh =
-        MakeRigid3d(axes, frame.point + walker.l * frame.lateral + kerb_height_ * frame.normal);
+    pose.world_from_mesh = MakeRigid3d(axes, line_.SurfacePoint(frame, walker.l, kerb_height_));
     poses->push_back(pose);
   }
 }
