@@ -37,8 +37,11 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
+#include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -66,6 +69,11 @@ struct PairData {
   double true_step = 0.0;
   cv::Mat mask;           // the crude corridor mask, or the synthetic pairs' road mask
   cv::Mat semantic_mask;  // from the sequence's semantic labels (empty when it has none)
+  // Rendered sequences only (depth/ and road_planes.txt): the true depth (z, metres; 0 when
+  // unknown) and the road label of each previous pixel, and the previous frame's road plane.
+  std::vector<double> true_depths;
+  std::vector<bool> on_road;
+  std::optional<Plane> true_plane;
 };
 
 enum class MaskKind { kNone, kCorridor, kSemantic };
@@ -130,6 +138,21 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
   const std::string image_dir = sequence_dir + "/image_0";
   const std::string semantic_dir = sequence_dir + "/semantic";
   const bool has_semantic = std::filesystem::is_directory(semantic_dir);
+  const std::string depth_dir = sequence_dir + "/depth";
+  const bool has_depth = std::filesystem::is_directory(depth_dir);
+  std::map<int, Plane> true_planes;
+  {
+    std::ifstream planes(sequence_dir + "/road_planes.txt");
+    std::string line;
+    while (std::getline(planes, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream fields(line);
+      int index = 0;
+      Plane plane;
+      fields >> index >> plane.normal.x() >> plane.normal.y() >> plane.normal.z() >> plane.height;
+      if (fields) true_planes[index] = plane;
+    }
+  }
   std::unique_ptr<Segmenter> segmenter;
   if (!has_semantic && !segmentation_model.empty()) {
     SegmentationOptions segmentation;
@@ -186,6 +209,20 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
       if (SampsonDistancePx(fundamental, prev, cur) > 1.0) continue;
       pair.prev_pixels.push_back(prev);
       pair.cur_pixels.push_back(cur);
+    }
+    if (has_depth) {
+      char previous[32];
+      std::snprintf(previous, sizeof(previous), "/%06d.png", frame - 1);
+      const cv::Mat depth = cv::imread(depth_dir + previous, cv::IMREAD_UNCHANGED);
+      if (depth.type() != CV_16UC1) ThrowFileError(depth_dir + previous, "expected 16-bit depth");
+      for (const Eigen::Vector2d& pixel : pair.prev_pixels) {
+        const int x = std::clamp(static_cast<int>(std::lround(pixel.x())), 0, depth.cols - 1);
+        const int y = std::clamp(static_cast<int>(std::lround(pixel.y())), 0, depth.rows - 1);
+        pair.true_depths.push_back(depth.at<uint16_t>(y, x) / 256.0);
+        pair.on_road.push_back(!pair.semantic_mask.empty() && pair.semantic_mask.at<uchar>(y, x));
+      }
+      const auto plane = true_planes.find(frame - 1);
+      if (plane != true_planes.end()) pair.true_plane = plane->second;
     }
     pairs.push_back(std::move(pair));
     prev_image = image;
@@ -312,6 +349,127 @@ void PrintTable(const std::string& title, const std::vector<PairData>& pairs,
   }
 }
 
+// Where the bias of a rendered sequence comes from (needs depth/, semantic/ and
+// road_planes.txt): for every pair, the triangulated depth of the road-labelled tracks against
+// the rendered depth, binned by true depth; and for the configuration's RANSAC inliers, the
+// plane fitted to their triangulated points against the plane fitted to their TRUE points
+// (the same tracks at the rendered depth) and against the true road plane. "sel" isolates
+// what the selection picked (not road, or road off the tangent plane), "tri" adds the
+// triangulation.
+void Diagnose(const std::vector<PairData>& pairs, const PinholeCamera& camera,
+              const Configuration& configuration, double camera_height) {
+  if (pairs.empty() || pairs.front().true_depths.empty()) return;
+  ScaleEstimatorOptions options;
+  options.camera_height = camera_height;
+  configuration.change(&options);
+  ScaleEstimator estimator(camera, options);
+  const cv::Mat no_mask;
+  const std::vector<double> edges = {0, 6, 9, 12, 16, 20, 25, 30, 40, 60, 1e9};
+  const size_t bins = edges.size() - 1;
+  std::vector<std::vector<double>> all_errors(bins), inlier_errors(bins);
+  // KLT's current pixel minus the true one (from the rendered depth and the true motion),
+  // along x and y, for road and for other tracks.
+  std::vector<std::vector<double>> road_dx(bins), road_dy(bins), other_dx(bins), other_dy(bins);
+  std::vector<double> h_tri, h_sel, h_scale, pitch_diff, roll_diff, true_dist_sel, z_inliers;
+  for (const PairData& pair : pairs) {
+    const cv::Mat& mask = configuration.mask == MaskKind::kCorridor   ? pair.mask
+                          : configuration.mask == MaskKind::kSemantic ? pair.semantic_mask
+                                                                      : no_mask;
+    const ScaleEstimate estimate =
+        estimator.Estimate(pair.prev_pixels, pair.cur_pixels, pair.cur_from_prev, mask);
+    const TriangulatedPoints points = TriangulateUnitBaseline(
+        pair.prev_pixels, pair.cur_pixels, pair.cur_from_prev, camera, options.triangulation);
+    std::vector<int> point_of_track(pair.prev_pixels.size(), -1);
+    for (size_t k = 0; k < points.track_indices.size(); ++k) {
+      point_of_track[points.track_indices[k]] = static_cast<int>(k);
+    }
+    const auto bin_of = [&](double z) {
+      size_t b = 0;
+      while (b + 1 < bins && z >= edges[b + 1]) ++b;
+      return b;
+    };
+    for (size_t t = 0; t < pair.prev_pixels.size(); ++t) {
+      if (pair.true_depths[t] <= 0.0) continue;
+      const Eigen::Vector3d ray = camera.Unproject(pair.prev_pixels[t]);
+      const Eigen::Vector3d in_cur =
+          pair.cur_from_prev.linear() * (ray / ray.z() * pair.true_depths[t]) +
+          pair.cur_from_prev.translation() * pair.true_step;
+      const Eigen::Vector2d error = pair.cur_pixels[t] - camera.Project(in_cur);
+      const size_t b = bin_of(pair.true_depths[t]);
+      if (!pair.on_road[t]) continue;
+      // Road tracks whose KLT window (21 x 21) is all road, and the others.
+      const cv::Rect window(static_cast<int>(std::lround(pair.prev_pixels[t].x())) - 10,
+                            static_cast<int>(std::lround(pair.prev_pixels[t].y())) - 10, 21, 21);
+      const cv::Rect clipped =
+          window & cv::Rect(0, 0, pair.semantic_mask.cols, pair.semantic_mask.rows);
+      const bool pure = clipped.area() == window.area() &&
+                        cv::countNonZero(pair.semantic_mask(clipped)) == window.area();
+      (pure ? road_dx : other_dx)[b].push_back(error.x());
+      (pure ? road_dy : other_dy)[b].push_back(error.y());
+    }
+    for (size_t t = 0; t < pair.prev_pixels.size(); ++t) {
+      const int k = point_of_track[t];
+      if (k < 0 || !pair.on_road[t] || pair.true_depths[t] <= 0.0) continue;
+      all_errors[bin_of(pair.true_depths[t])].push_back(
+          points.points[k].z() * pair.true_step / pair.true_depths[t] - 1.0);
+    }
+    if (estimate.status != ScaleStatus::kOk || !pair.true_plane) continue;
+    std::vector<Eigen::Vector3d> tri, truth;
+    for (int t : estimate.road_track_indices) {
+      if (pair.true_depths[t] <= 0.0) continue;
+      const int k = point_of_track[t];
+      tri.push_back(points.points[k] * pair.true_step);
+      const Eigen::Vector3d ray = camera.Unproject(pair.prev_pixels[t]);
+      truth.push_back(ray / ray.z() * pair.true_depths[t]);
+      inlier_errors[bin_of(pair.true_depths[t])].push_back(tri.back().z() / truth.back().z() - 1.0);
+      true_dist_sel.push_back(pair.true_plane->SignedDistance(truth.back()));
+      z_inliers.push_back(truth.back().z());
+    }
+    std::vector<int> all(tri.size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    const auto fit_tri = FitPlaneLeastSquares(tri, all, pair.true_plane->normal);
+    const auto fit_sel = FitPlaneLeastSquares(truth, all, pair.true_plane->normal);
+    if (!fit_tri || !fit_sel) continue;
+    h_scale.push_back(estimate.plane.height * pair.true_step / pair.true_plane->height - 1.0);
+    h_tri.push_back(fit_tri->height / pair.true_plane->height - 1.0);
+    h_sel.push_back(fit_sel->height / pair.true_plane->height - 1.0);
+    pitch_diff.push_back((estimate.plane.PitchRad() - pair.true_plane->PitchRad()) * 180 / M_PI);
+    roll_diff.push_back((estimate.plane.RollRad() - pair.true_plane->RollRad()) * 180 / M_PI);
+  }
+  std::printf("\nBias diagnosis, %s (%zu fitted pairs)\n\n", configuration.name.c_str(),
+              h_scale.size());
+  std::printf(
+      "| true depth m | road tracks | med depth err %% | mean %% | inliers | med %% | mean %% |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (size_t b = 0; b < bins; ++b) {
+    std::printf("| %g-%g | %zu | %+.2f | %+.2f | %zu | %+.2f | %+.2f |\n", edges[b], edges[b + 1],
+                all_errors[b].size(), 100 * Percentile(all_errors[b], 0.5),
+                100 * Mean(all_errors[b]), inlier_errors[b].size(),
+                100 * Percentile(inlier_errors[b], 0.5), 100 * Mean(inlier_errors[b]));
+  }
+  std::printf(
+      "\n| true depth m | road tracks, window all road | med dx px | med dy px | road tracks, "
+      "window not all road | med dx | med dy |\n|---|---|---|---|---|---|---|\n");
+  for (size_t b = 0; b < bins; ++b) {
+    std::printf("| %g-%g | %zu | %+.3f | %+.3f | %zu | %+.3f | %+.3f |\n", edges[b], edges[b + 1],
+                road_dx[b].size(), Percentile(road_dx[b], 0.5), Percentile(road_dy[b], 0.5),
+                other_dx[b].size(), Percentile(other_dx[b], 0.5), Percentile(other_dy[b], 0.5));
+  }
+  std::printf(
+      "\nplane height / true h - 1 (mean, median %%): estimator %+.2f %+.2f; LS on triangulated "
+      "inliers %+.2f %+.2f; LS on the inliers' true points %+.2f %+.2f\n",
+      100 * Mean(h_scale), 100 * Percentile(h_scale, 0.5), 100 * Mean(h_tri),
+      100 * Percentile(h_tri, 0.5), 100 * Mean(h_sel), 100 * Percentile(h_sel, 0.5));
+  std::printf("plane pitch - true pitch (mean, median deg): %+.3f %+.3f; roll %+.3f %+.3f\n",
+              Mean(pitch_diff), Percentile(pitch_diff, 0.5), Mean(roll_diff),
+              Percentile(roll_diff, 0.5));
+  std::printf(
+      "inliers' true distance to the true plane (mean, median cm): %+.2f %+.2f; "
+      "inliers' true depth median %.1f m, p90 %.1f m\n",
+      100 * Mean(true_dist_sel), 100 * Percentile(true_dist_sel, 0.5), Percentile(z_inliers, 0.5),
+      Percentile(z_inliers, 0.9));
+}
+
 std::vector<Configuration> Configurations() {
   using Options = ScaleEstimatorOptions;
   const auto none = [](Options*) {};
@@ -330,6 +488,41 @@ std::vector<Configuration> Configurations() {
                     mask});
     list.push_back({"RM (no vote)" + suffix, [](Options* o) { o->use_depth_vote = false; }, mask});
     list.push_back({"beyond: 3 deg below horizon" + suffix, beyond, mask});
+    if (mask != MaskKind::kNone) {
+      for (int margin : {7, 10, 13}) {
+        list.push_back({"beyond: mask margin " + std::to_string(margin) + " px" + suffix,
+                        [margin](Options* o) { o->road_mask_margin_px = margin; }, mask});
+      }
+    }
+    for (double width : {2.1, 3.0, 3.9}) {
+      for (double distance : {14.0, 20.0, 26.0}) {
+        if (width != 3.0 && distance != 20.0) continue;
+        char name[96];
+        std::snprintf(name, sizeof(name), "beyond: corridor %.1f m x %.0f m%s", width, distance,
+                      suffix.c_str());
+        list.push_back({name,
+                        [width, distance](Options* o) {
+                          o->corridor.enabled = true;
+                          o->corridor.half_width_m = width;
+                          o->corridor.max_distance_m = distance;
+                        },
+                        mask});
+      }
+    }
+    list.push_back({"beyond: corridor straight" + suffix,
+                    [](Options* o) {
+                      o->corridor.enabled = true;
+                      o->corridor.follow_turn = false;
+                    },
+                    mask});
+    if (mask != MaskKind::kNone) {
+      list.push_back({"beyond: margin 10 px + corridor" + suffix,
+                      [](Options* o) {
+                        o->road_mask_margin_px = 10;
+                        o->corridor.enabled = true;
+                      },
+                      mask});
+    }
   }
   const MaskKind corridor = MaskKind::kCorridor;
   list.push_back({"vote per edge, mask",
@@ -364,6 +557,8 @@ int Main(int argc, char** argv) {
   double camera_height = 1.65;
   double min_parallax_deg = TriangulationOptions().min_parallax_deg;
   std::string segmentation_model;
+  bool diagnose = false;
+  std::string only;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (i + 1 >= argc) throw Error("option " + flag + " needs a value");
@@ -383,6 +578,10 @@ int Main(int argc, char** argv) {
       camera_height = std::stod(value);
     } else if (flag == "--min-parallax-deg") {
       min_parallax_deg = std::stod(value);
+    } else if (flag == "--only") {
+      only = value;
+    } else if (flag == "--diagnose") {
+      diagnose = value == "1";
     } else if (flag == "--segmentation-model") {
       segmentation_model = value;
     } else {
@@ -400,7 +599,12 @@ int Main(int argc, char** argv) {
            "plane_roll_deg,ms\n";
   }
   std::ofstream* csv_out = csv_path.empty() ? nullptr : &csv;
-  std::vector<Configuration> configurations = Configurations();
+  std::vector<Configuration> configurations;
+  for (Configuration& configuration : Configurations()) {
+    if (configuration.name.find(only) != std::string::npos) {
+      configurations.push_back(std::move(configuration));
+    }
+  }
   for (Configuration& configuration : configurations) {
     const auto change = configuration.change;
     configuration.change = [change, min_parallax_deg](ScaleEstimatorOptions* options) {
@@ -426,6 +630,11 @@ int Main(int argc, char** argv) {
                camera_height);
     // Pairs 1-13 of KITTI 00: the ground truth's constant 0.860 m a frame while the car
     // accelerates.
+    for (const Configuration& configuration : configurations) {
+      if (diagnose && configuration.mask == MaskKind::kSemantic) {
+        Diagnose(pairs, camera, configuration, camera_height);
+      }
+    }
     if (!own_sequence) {
       PrintTable("KITTI 00 without the ground truth's constant-speed pairs 1-13", pairs, camera,
                  configurations, 13, nullptr, "kitti", camera_height);

@@ -4,6 +4,8 @@
 #include <limits>
 #include <optional>
 
+#include <opencv2/imgproc.hpp>
+
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -33,6 +35,9 @@ void ScaleEstimatorOptions::Check() const {
   CheckOption(std::isfinite(min_angle_below_horizon_deg) && min_angle_below_horizon_deg >= 0.0 &&
                   min_angle_below_horizon_deg < 45.0,
               "scale.min_angle_below_horizon_deg", "must be in [0, 45) degrees");
+  CheckOption(road_mask_margin_px >= 0 && road_mask_margin_px <= 100, "scale.road_mask_margin_px",
+              "must be in [0, 100] pixels");
+  corridor.Check();
   triangulation.Check();
   depth_vote.Check();
   road_model.Check();
@@ -111,12 +116,33 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
   const std::vector<Eigen::Vector2d> pixels = Gather(prev_pixels, triangulated.track_indices);
 
   // `selection` indexes triangulated.points throughout.
-  const cv::Mat no_mask;
+  cv::Mat mask;
   estimate.used_road_mask = options_.use_segmentation && !prev_road_mask.empty();
+  if (estimate.used_road_mask) {
+    if (options_.road_mask_margin_px > 0 && prev_road_mask.type() == CV_8UC1) {
+      // Into a new image: the caller's mask stays as it is.
+      const int side = 2 * options_.road_mask_margin_px + 1;
+      cv::erode(prev_road_mask, mask, cv::getStructuringElement(cv::MORPH_RECT, {side, side}));
+    } else {
+      mask = prev_road_mask;
+    }
+  }
   std::vector<int> selection = PreselectRoadCandidates(
-      pixels, triangulated.points, estimate.used_road_mask ? prev_road_mask : no_mask,
-      options_.use_horizon ? road_normal : std::nullopt,
+      pixels, triangulated.points, mask, options_.use_horizon ? road_normal : std::nullopt,
       options_.min_angle_below_horizon_deg * M_PI / 180.0);
+  if (options_.corridor.enabled) {
+    std::vector<bool> in_corridor(pixels.size(), false);
+    for (int index :
+         SelectRoadCorridor(pixels, camera_, cur_from_prev, *road_normal, options_.camera_height,
+                            has_model_ ? last_raw_scale_ : 0.0, options_.corridor)) {
+      in_corridor[index] = true;
+    }
+    std::vector<int> kept;
+    for (int index : selection) {
+      if (in_corridor[index]) kept.push_back(index);
+    }
+    selection = std::move(kept);
+  }
   estimate.num_preselected = static_cast<int>(selection.size());
 
   if (options_.use_depth_vote) {

@@ -164,6 +164,73 @@ TEST(ScaleEstimator, FilterSmoothsOverFrames) {
   EXPECT_LT(sum_abs_raw / 8.0, 0.01);
 }
 
+TEST(ScaleEstimator, RoadMaskMarginDropsTracksNearTheMaskBorder) {
+  // Road only right of column 400: with a margin of 10 px, only tracks from column 410 on.
+  const Plane road{Eigen::Vector3d::UnitY(), 1.65};
+  const testing::TwoViewObservations pair = StreetPair(road, 6, 0.0);
+  const Rigid3d motion = testing::DriveAlongRoad(road, kStep, 0.0);
+  cv::Mat mask(376, 1241, CV_8UC1, cv::Scalar(0));
+  mask.colRange(400, 1241).setTo(255);
+  ScaleEstimatorOptions options = Unfiltered();
+  ScaleEstimator plain(KittiOdometryCamera(), options);
+  const ScaleEstimate without = plain.Estimate(pair.prev_pixels, pair.cur_pixels, motion, mask);
+  options.road_mask_margin_px = 10;
+  ScaleEstimator margin(KittiOdometryCamera(), options);
+  const cv::Mat before = mask.clone();
+  const ScaleEstimate with = margin.Estimate(pair.prev_pixels, pair.cur_pixels, motion, mask);
+  EXPECT_EQ(cv::countNonZero(mask != before), 0) << "the caller's mask must not change";
+  ASSERT_EQ(with.status, ScaleStatus::kOk);
+  int near_border = 0;
+  for (const Eigen::Vector2d& pixel : pair.prev_pixels) {
+    const long column = std::lround(pixel.x());
+    if (column >= 400 && column < 410) {
+      ++near_border;
+    }
+  }
+  EXPECT_GT(near_border, 0);
+  EXPECT_LT(with.num_preselected, without.num_preselected);
+  for (int track : with.road_track_indices)
+    EXPECT_GE(std::lround(pair.prev_pixels[track].x()), 410);
+  bool any_near_border = false;
+  for (int track : without.road_track_indices) {
+    any_near_border |= std::lround(pair.prev_pixels[track].x()) < 410;
+  }
+  EXPECT_TRUE(any_near_border);
+  EXPECT_LT(std::abs(with.raw_scale / kStep - 1.0), 0.01);
+  options.road_mask_margin_px = -1;
+  EXPECT_THROW(ScaleEstimator(KittiOdometryCamera(), options), Error);
+}
+
+TEST(ScaleEstimator, CorridorKeepsRoadAheadOfTheCarOnly) {
+  // A left turn, so the corridor bends once the first frame has given a metric step.
+  const Plane road{Eigen::Vector3d(0.0, std::cos(1.0 * kDeg), std::sin(1.0 * kDeg)), 1.65};
+  ScaleEstimatorOptions options = Unfiltered();
+  options.corridor.enabled = true;
+  ScaleEstimator estimator(KittiOdometryCamera(), options);
+  for (uint32_t frame = 0; frame < 3; ++frame) {
+    const double yaw = -1.5 * kDeg;
+    const testing::TwoViewObservations pair = StreetPair(road, 30 + frame, yaw);
+    const Rigid3d motion = testing::DriveAlongRoad(road, kStep, yaw);
+    const ScaleEstimate estimate =
+        estimator.Estimate(pair.prev_pixels, pair.cur_pixels, motion, cv::Mat());
+    ASSERT_EQ(estimate.status, ScaleStatus::kOk) << "frame " << frame;
+    // Fewer points than the whole street: a little more noise.
+    EXPECT_LT(std::abs(estimate.raw_scale / kStep - 1.0), 0.02) << "frame " << frame;
+    const double curvature = frame == 0 ? 0.0 : yaw / kStep;
+    for (int track : estimate.road_track_indices) {
+      const Eigen::Vector3d& point = pair.points[track];
+      // The road frame of the motion: ahead along the step, lateral to the right.
+      const Eigen::Vector3d along(0.0, -std::sin(1.0 * kDeg), std::cos(1.0 * kDeg));
+      const double s = along.dot(point);
+      const double path = frame == 0 ? 0.0 : 0.5 * curvature * s * s - 0.5 * yaw * s;
+      // The corridor is drawn from noisy pixels (0.3 px: 0.5 m of distance at 20 m), and
+      // wall and car points within centimetres of the road pass as road.
+      EXPECT_LE(s, 20.0 + 0.5);
+      EXPECT_LE(std::abs(point.x() - path), 3.0 + 0.1) << "frame " << frame;
+    }
+  }
+}
+
 TEST(ScaleEstimator, RejectsBadInput) {
   ScaleEstimatorOptions options;
   options.camera_height = 0.0;
