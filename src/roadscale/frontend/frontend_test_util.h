@@ -66,17 +66,18 @@ struct TwoViewScene {
   std::vector<bool> is_outlier;
 };
 
-// Random points of a street-like scene (x in [-20, 20] m, y in [-6, 2] m, z in [4, 60] m in
-// the previous camera) seen from two cameras related by cur_from_prev = (R, t), projected
+// Random points of a street-like scene (x in [-20, 20] m, y in [-6, 2] m, z in [z_min, z_max]
+// m in the previous camera) seen from two cameras related by cur_from_prev = (R, t), projected
 // with Gaussian pixel noise. Only points visible in both images are kept. A share of
 // `outlier_ratio` of them get a current position displaced by 5-60 px in a random direction.
 inline TwoViewScene MakeTwoViewScene(const PinholeCamera& camera, const Eigen::Matrix3d& R,
                                      const Eigen::Vector3d& t, int count, double noise_px,
-                                     double outlier_ratio = 0.0, unsigned seed = 3) {
+                                     double outlier_ratio = 0.0, unsigned seed = 3,
+                                     double z_min = 4.0, double z_max = 60.0) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> ux(-20.0, 20.0);
   std::uniform_real_distribution<double> uy(-6.0, 2.0);
-  std::uniform_real_distribution<double> uz(4.0, 60.0);
+  std::uniform_real_distribution<double> uz(z_min, z_max);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> noise(0.0, noise_px);
   TwoViewScene scene;

@@ -105,6 +105,55 @@ Eigen::Matrix3d EssentialFromMotion(const Eigen::Matrix3d& R, const Eigen::Vecto
   return skew * R;
 }
 
+struct Decomposition {
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d direction;
+};
+
+// The motion (R, t) with E = [t]x R that the camera made. E gives two rotations, 180 degrees
+// apart about the baseline, and t up to sign. The rotation is the one nearer the
+// rotation-only estimate (never wrong by 180 degrees); the sign of t is the one that puts the
+// correspondences in front of both cameras, each voting with the sine of its parallax angle.
+// (OpenCV's recoverPose counts only points nearer than 50 baselines: after a stop, with a
+// baseline of a few centimetres, that leaves a handful of points, and it returned the twisted
+// rotation or the reversed direction on synthetic stop-and-go scenes.)
+Decomposition DecomposeEssential(const Eigen::Matrix3d& E, const Eigen::Matrix3d& rotation_hint,
+                                 const std::vector<Correspondence>& correspondences,
+                                 const std::vector<size_t>& subset, const PinholeCamera& camera) {
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(E, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d U = svd.matrixU();
+  Eigen::Matrix3d V = svd.matrixV();
+  if (U.determinant() < 0.0) U = -U;
+  if (V.determinant() < 0.0) V = -V;
+  Eigen::Matrix3d W;
+  W << 0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0;
+  const Eigen::Matrix3d R1 = U * W * V.transpose();
+  const Eigen::Matrix3d R2 = U * W.transpose() * V.transpose();
+  Decomposition result;
+  result.rotation =
+      RotationAngle(R1.transpose() * rotation_hint) <= RotationAngle(R2.transpose() * rotation_hint)
+          ? R1
+          : R2;
+  result.direction = U.col(2).normalized();
+
+  double votes = 0.0;  // > 0: +t puts the points in front of both cameras
+  for (size_t i : subset) {
+    const Eigen::Vector3d b1 = result.rotation * camera.Unproject(correspondences[i].prev);
+    const Eigen::Vector3d b2 = camera.Unproject(correspondences[i].cur);
+    // d2 b2 = d1 b1 + t, solved for the depths d1 (along b1) and d2 (along b2).
+    const Eigen::Vector3d c = b1.cross(b2);
+    const double c2 = c.squaredNorm();
+    if (c2 <= 0.0) continue;
+    const double d1 = -result.direction.cross(b2).dot(c) / c2;
+    const double d2 = -result.direction.cross(b1).dot(c) / c2;
+    const double weight = std::sqrt(c2) / (b1.norm() * b2.norm());
+    if (d1 > 0.0 && d2 > 0.0) votes += weight;
+    if (d1 < 0.0 && d2 < 0.0) votes -= weight;
+  }
+  if (votes < 0.0) result.direction = -result.direction;
+  return result;
+}
+
 double MedianParallaxPx(const std::vector<Correspondence>& correspondences,
                         const PinholeCamera& camera, const Eigen::Matrix3d& R,
                         const std::vector<size_t>& subset) {
@@ -224,24 +273,18 @@ TwoViewMotion EstimateTwoViewMotion(const std::vector<Correspondence>& correspon
     motion.status = MotionStatus::kTooFewInliers;
     return motion;
   }
-  const cv::Mat E = E_all.rowRange(0, 3).clone();
-  // recoverPose chooses among the four decompositions of E the one that puts the inliers in
-  // front of both cameras (cheirality). Its mask is not used as the inlier set: it also
-  // drops the far points (depth > 50 baselines) that are accurate rotation constraints.
-  cv::Mat pose_mask = ransac_mask.clone();
-  cv::Mat R_cv;
-  cv::Mat t_cv;
-  cv::recoverPose(E, prev_px, cur_px, K, R_cv, t_cv, pose_mask);
-  Eigen::Matrix3d R;
-  Eigen::Vector3d t;
-  cv::cv2eigen(R_cv, R);
-  cv::cv2eigen(t_cv, t);
-  t.normalize();
-
-  std::vector<size_t> inliers;
+  Eigen::Matrix3d E;
+  cv::cv2eigen(cv::Mat(E_all.rowRange(0, 3)), E);
+  std::vector<size_t> ransac_inliers;
   for (size_t i = 0; i < n; ++i) {
-    if (ransac_mask.at<unsigned char>(static_cast<int>(i)) != 0) inliers.push_back(i);
+    if (ransac_mask.at<unsigned char>(static_cast<int>(i)) != 0) ransac_inliers.push_back(i);
   }
+  const Decomposition pose =
+      DecomposeEssential(E, rotation_only.rotation, correspondences, ransac_inliers, camera);
+  Eigen::Matrix3d R = pose.rotation;
+  Eigen::Vector3d t = pose.direction;
+
+  std::vector<size_t> inliers = ransac_inliers;
 
   const double focal = 0.5 * (camera.fx + camera.fy);
   std::vector<Eigen::Vector2d> prev_norm(n);

@@ -157,6 +157,26 @@ TEST(TwoViewMotion, RejectsThirtyPercentOutliers) {
   }
 }
 
+TEST(TwoViewMotion, KeepsTheDirectionAndRotationRightAtATinyBaseline) {
+  // Creeping forward 30 cm among points 4-60 m away: a median parallax of 1.4-1.7 px, just
+  // above min_parallax_px. The cheirality vote must still tell t from -t, and the rotation
+  // must not be the one twisted by 180 degrees about the baseline.
+  const PinholeCamera camera = KittiOdometryCamera();
+  const Eigen::Matrix3d R = testing::RotationFromDegrees(0.05, 0.02, 0.0);
+  const Eigen::Vector3d t = TranslationOf(R, {0.0, 0.0, 0.3});
+  int ok = 0;
+  for (int scene_seed = 1; scene_seed <= kScenes; ++scene_seed) {
+    const testing::TwoViewScene scene =
+        testing::MakeTwoViewScene(camera, R, t, 600, /*noise_px=*/0.1, 0.05, scene_seed);
+    const TwoViewMotion motion = EstimateTwoViewMotion(scene.correspondences, camera, {});
+    if (motion.status != MotionStatus::kOk) continue;
+    ++ok;
+    EXPECT_LT(RotationErrorDeg(motion.rotation, R), 0.1) << "scene " << scene_seed;
+    EXPECT_LT(DirectionErrorDeg(motion.direction, t), 5.0) << "scene " << scene_seed;
+  }
+  EXPECT_EQ(ok, kScenes);
+}
+
 TEST(TwoViewMotion, ReportsAStationaryCamera) {
   const PinholeCamera camera = KittiOdometryCamera();
   const testing::TwoViewScene scene = testing::MakeTwoViewScene(camera, Eigen::Matrix3d::Identity(),
