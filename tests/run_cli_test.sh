@@ -86,5 +86,5 @@ expect_failure "unknown --scale 'magic'" \
   "$roadscale" run --kitti "$out/data/sequences/00" --scale magic --out "$out/run"
 "$roadscale" run --help >"$out/help.txt"
 expect_line "$out/help.txt" "--no-segmentation"
-expect_line "$out/help.txt" "only mode for now"
+expect_line "$out/help.txt" "--labels"
 echo "run errors: all checks passed"

@@ -8,6 +8,9 @@ namespace roadscale::cli {
 // these functions. A subcommand's callback throws roadscale::Error on bad input; main()
 // turns it into one line on stderr and a non-zero exit code.
 
+// `roadscale demo`: renders a synthetic sequence, runs the pipeline, writes the report.
+void RegisterDemoCommand(CLI::App& app);
+
 // `roadscale eval`: KITTI devkit metric, ATE, RPE and drift of an estimated trajectory.
 void RegisterEvalCommand(CLI::App& app);
 

@@ -1,17 +1,30 @@
-// `roadscale run`: the visual odometry on a sequence, writing OUT/poses_kitti.txt while it
-// runs. For now the sequential pipeline without segmentation; the scale from the road plane
-// (the paper's method, the default) or from the ground truth (oracle).
+// `roadscale run`: the visual odometry on a sequence (the system of the paper's Fig. 1):
+// segmentation, frontend and road-plane scale on their own threads, outputs written while
+// it runs, a report at the end.
+#include "run_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
-#include <optional>
-#include <string>
+#include <vector>
 
+#include <unistd.h>
+
+#include "roadscale/eval/metrics_json.h"
 #include "roadscale/frontend/feature_detector.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/pipeline/oracle_scale_source.h"
 #include "roadscale/pipeline/road_scale_source.h"
-#include "roadscale/pipeline/sequential_pipeline.h"
+#include "roadscale/pipeline/run_pipeline.h"
+#include "roadscale/pipeline/run_report.h"
+#include "roadscale/segmentation/label_image_segmenter.h"
+#include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
 
 #include "commands.h"
@@ -19,98 +32,310 @@
 namespace roadscale::cli {
 namespace {
 
-struct RunArguments {
-  std::string kitti;
-  std::string scale = "road";
-  std::optional<double> h0;
-  bool no_segmentation = false;
-  std::string detector = "sift";
-  std::string frames;
-  std::string out;
+std::atomic<bool> g_interrupted{false};
+
+void OnInterrupt(int) { g_interrupted = true; }
+
+// Installs the Ctrl-C handler for the lifetime of a run: the first Ctrl-C stops the run after
+// the frames in flight; the previous handler comes back afterwards.
+class InterruptScope {
+ public:
+  InterruptScope() {
+    g_interrupted = false;
+    previous_ = std::signal(SIGINT, OnInterrupt);
+  }
+  ~InterruptScope() { std::signal(SIGINT, previous_); }
+
+ private:
+  void (*previous_)(int) = SIG_DFL;
 };
 
+void Note(const std::string& text) { std::cerr << "roadscale: note: " << text << '\n'; }
+
+std::filesystem::path DefaultModelPath() {
+  return std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel;
+}
+
+// The segmenter the config asks for; updates config->segmentation.model to what was used,
+// so that config_used.yaml repeats the run.
+std::unique_ptr<Segmenter> MakeRunSegmenter(RunConfig* config) {
+  SegmentationOptions& options = config->segmentation;
+  if (!config->labels.empty()) {
+    SegmentationModel model;
+    model.yaml_path = config->labels;
+    model.backend = SegmentationBackend::kLabelImages;
+    model.label_images.folder = config->labels;
+    model.label_images.ids = LabelIdSpace::kTrainIds;
+    options.Check();
+    return std::make_unique<LabelImageSegmenter>(model, options.masks);
+  }
+  if (options.model == "default") {
+    const std::string path = DefaultModelPath().string();
+    try {
+      ReadSegmentationModel(path);
+      options.model = path;
+    } catch (const Error& error) {
+      std::cerr << "roadscale: segmentation off: model not found at " << path << " ("
+                << error.what() << ")\n";
+      options.model = "none";
+    }
+  }
+  return MakeSegmenter(options);
+}
+
+std::string Describe(const RunConfig& config, const Segmenter& segmenter) {
+  return config.labels.empty() ? segmenter.Description() : "label images in " + config.labels;
+}
+
+}  // namespace
+
 void RunRun(const RunArguments& arguments) {
-  PipelineOptions options;
-  options.frontend.tracker.detector.type = ParseDetectorType(arguments.detector);
-  options.Check();
-  if (arguments.scale != "oracle" && arguments.scale != "road") {
-    throw Error("unknown --scale '" + arguments.scale + "' (expected road or oracle)");
+  const int inputs =
+      !arguments.kitti.empty() + !arguments.images.empty() + !arguments.video.empty();
+  if (inputs != 1) throw Error("give exactly one of --kitti, --images, --video");
+  if (!arguments.model.empty() + !arguments.labels.empty() + arguments.no_segmentation > 1) {
+    throw Error("give at most one of --model, --labels, --no-segmentation");
   }
 
+  RunConfig config;
+  if (!arguments.config.empty()) ReadRunConfig(arguments.config, &config);
+  if (arguments.scale) config.scale_source = *arguments.scale;
+  if (arguments.detector) {
+    config.pipeline.frontend.tracker.detector.type = ParseDetectorType(*arguments.detector);
+  }
+  if (arguments.h0) config.camera.h0 = *arguments.h0;
+  if (!arguments.model.empty()) {
+    config.segmentation.model = arguments.model;
+    config.labels.clear();
+  }
+  if (!arguments.labels.empty()) config.labels = arguments.labels;
+  if (arguments.no_segmentation) {
+    config.segmentation.model = "none";
+    config.labels.clear();
+  }
+  if (config.scale_source != "oracle" && config.scale_source != "road") {
+    throw Error("unknown --scale '" + config.scale_source + "' (expected road or oracle)");
+  }
+  config.pipeline.Check();
+
+  std::error_code error;
+  std::filesystem::create_directories(arguments.out, error);
+  if (error || !std::filesystem::is_directory(arguments.out)) {
+    ThrowFileError(arguments.out, "cannot create the output folder");
+  }
   FrameSourceOptions source_options;
-  source_options.input = arguments.kitti;
-  source_options.type = FrameSourceType::kKitti;
+  source_options.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
+                        : !arguments.images.empty() ? FrameSourceType::kImageFolder
+                                                    : FrameSourceType::kVideo;
+  source_options.input = !arguments.kitti.empty()    ? arguments.kitti
+                         : !arguments.images.empty() ? arguments.images
+                                                     : arguments.video;
   source_options.frames = ParseFrameRange(arguments.frames);
-  source_options.h0 = arguments.h0;
+  source_options.h0 = config.camera.h0;
+  source_options.camera_yaml = arguments.camera;
+  if (source_options.camera_yaml.empty() && config.camera.HasIntrinsics() &&
+      source_options.type != FrameSourceType::kKitti) {
+    // The config's Camera block is the camera (the camera reader wants every key, h0 too).
+    CameraSetup setup;
+    setup.camera.fx = *config.camera.fx;
+    setup.camera.fy = *config.camera.fy;
+    setup.camera.cx = *config.camera.cx;
+    setup.camera.cy = *config.camera.cy;
+    setup.camera.width = *config.camera.width;
+    setup.camera.height = *config.camera.height;
+    setup.h0 = config.camera.h0.value_or(1.65);
+    source_options.camera_yaml = (std::filesystem::path(arguments.out) / "camera.yaml").string();
+    WriteCameraYaml(source_options.camera_yaml, setup);
+  }
+  if (source_options.type != FrameSourceType::kKitti && source_options.camera_yaml.empty()) {
+    throw Error(
+        "--images and --video need --camera CAM.yaml (or a --config with a Camera: "
+        "block holding fx, fy, cx, cy, width, height)");
+  }
   const std::unique_ptr<FrameSource> source = OpenFrameSource(source_options);
-  for (const std::string& note : source->notes()) std::cerr << "roadscale: note: " << note << '\n';
+  for (const std::string& note : source->notes()) Note(note);
+  const CameraSetup& camera = source->camera();
+  config.camera.fx = camera.camera.fx;
+  config.camera.fy = camera.camera.fy;
+  config.camera.cx = camera.camera.cx;
+  config.camera.cy = camera.camera.cy;
+  config.camera.width = camera.camera.width;
+  config.camera.height = camera.camera.height;
+  config.camera.h0 = camera.h0;
+
+  const std::unique_ptr<Segmenter> segmenter = MakeRunSegmenter(&config);
+  if (const auto* files = dynamic_cast<const ImageFileSequence*>(source.get())) {
+    std::vector<std::string> names;
+    for (const std::string& path : files->image_paths()) {
+      Frame frame;
+      frame.path = path;
+      names.push_back(FrameName(frame));
+    }
+    segmenter->CheckFrames(names, cv::Size(camera.camera.width, camera.camera.height));
+  }
 
   const Trajectory* ground_truth = source->ground_truth();
   std::unique_ptr<ScaleSource> scale_source;
-  if (arguments.scale == "oracle") {
+  if (config.scale_source == "oracle") {
     if (ground_truth == nullptr) {
-      throw Error(arguments.kitti +
+      throw Error(source_options.input +
                   ": --scale oracle needs ground-truth poses (../../poses/NN.txt beside the "
                   "sequence folder), and there are none");
     }
     scale_source = std::make_unique<OracleScaleSource>(*ground_truth);
   } else {
-    ScaleEstimatorOptions scale_options;
-    scale_options.camera_height = source->camera().h0;
-    scale_source = std::make_unique<RoadScaleSource>(source->camera().camera, scale_options);
+    ScaleEstimatorOptions scale_options = config.scale;
+    scale_options.camera_height = camera.h0;
+    scale_source = std::make_unique<RoadScaleSource>(camera.camera, scale_options);
   }
-  ScaleSource& scale = *scale_source;
 
+  const std::string config_path =
+      (std::filesystem::path(arguments.out) / "config_used.yaml").string();
+  WriteRunConfig(config_path, config);
+  const std::string segmentation_text = Describe(config, *segmenter);
   std::cout << "Input:  " << source->Describe() << '\n'
-            << "Scale:  " << scale.Name()
-            << (arguments.scale == "road" ? " (h0 = " + std::to_string(source->camera().h0) + " m)"
-                                          : std::string())
+            << "Scale:  " << scale_source->Name()
+            << (config.scale_source == "road" ? " (h0 = " + std::to_string(camera.h0) + " m)"
+                                              : std::string())
             << '\n'
-            << "Frontend: " << arguments.detector << " features, no segmentation\n";
-  const RunSummary summary = RunSequentialPipeline(*source, scale, options, arguments.out);
-  // The ground truth of the same frames beside the estimate, so that `roadscale eval` can
-  // compare them pose for pose.
-  std::cout << summary.Format() << "Poses:  " << arguments.out << "/poses_kitti.txt\n"
-            << "Frames: " << arguments.out << "/frames.csv\n";
-  if (ground_truth != nullptr) {
-    const std::string gt_path = arguments.out + "/gt_poses_kitti.txt";
-    WriteKittiTrajectory(gt_path, *ground_truth);
-    std::cout << "Ground truth of these frames: " << gt_path << '\n';
-  }
-}
+            << "Frontend: " << DetectorTypeName(config.pipeline.frontend.tracker.detector.type)
+            << " features\n"
+            << "Segmentation: " << segmentation_text << '\n'
+            << std::flush;
 
-}  // namespace
+  // The progress line, on a terminal only (logs and CI stay clean).
+  const bool progress = isatty(STDERR_FILENO) != 0;
+  const size_t total = source->size();
+  const auto start = std::chrono::steady_clock::now();
+  auto last_print = start;
+  std::vector<FrameRecord> records;
+  const auto on_frame = [&](const FrameRecord& record) {
+    records.push_back(record);
+    if (!progress) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_print < std::chrono::milliseconds(200) && records.size() != total) return;
+    last_print = now;
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    const double fps = elapsed > 0.0 ? static_cast<double>(records.size()) / elapsed : 0.0;
+    const double eta = fps > 0.0 ? static_cast<double>(total - records.size()) / fps : 0.0;
+    std::fprintf(stderr, "\rframe %zu (%zu/%zu)  %.1f fps  step %.3f m (%s)  ETA %.0f s   ",
+                 record.index, records.size(), total, fps, record.step_length_m,
+                 record.status.c_str(), eta);
+    std::fflush(stderr);
+  };
+
+  PipelineRunResult result;
+  {
+    InterruptScope interrupt_scope;
+    RunPipelineOptions run_options;
+    run_options.threaded = !arguments.sequential;
+    try {
+      result = RunPipeline(*source, *segmenter, *scale_source, config.pipeline, arguments.out,
+                           run_options, on_frame, &g_interrupted);
+    } catch (const Error&) {
+      if (progress) std::fprintf(stderr, "\n");
+      throw;
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  const std::string poses_path = arguments.out + "/poses_kitti.txt";
+  if (result.interrupted) {
+    throw Error("interrupted after " + std::to_string(records.size()) + " frames: " + poses_path +
+                ", poses_tum.txt and frames.csv hold those frames");
+  }
+
+  RunReportData report;
+  report.title = arguments.title.empty() ? "roadscale run: " + source->Describe() : arguments.title;
+  report.inputs = {
+      {"input", source->Describe()},
+      {"camera",
+       "fx " + std::to_string(camera.camera.fx) + ", " + std::to_string(camera.camera.width) + "x" +
+           std::to_string(camera.camera.height) + ", h0 " + std::to_string(camera.h0) + " m"},
+      {"config", arguments.config.empty() ? "defaults" : arguments.config},
+      {"segmentation", segmentation_text},
+      {"scale", scale_source->Name()}};
+  report.records = std::move(records);
+  report.scale_diagnostics_header = scale_source->DiagnosticsCsvHeader();
+  report.est_world_from_cam = ReadKittiTrajectory(poses_path).world_from_cam;
+  report.wall_time_s = result.summary.wall_s;
+  if (ground_truth != nullptr && ground_truth->world_from_cam.size() >= report.records.size()) {
+    Trajectory gt = *ground_truth;
+    gt.world_from_cam.resize(report.records.size());
+    if (gt.timestamps.size() > report.records.size()) gt.timestamps.resize(report.records.size());
+    report.gt_world_from_cam = gt.world_from_cam;
+    WriteKittiTrajectory(arguments.out + "/gt_poses_kitti.txt", gt);
+  }
+  const std::optional<TrajectoryEvaluation> evaluation = EvaluateRun(report);
+  const std::vector<std::string> written = WriteRunReport(arguments.out, report, evaluation);
+  for (const std::string& warning : ScaleWarnings(report.records)) {
+    std::cerr << "roadscale: warning: " << warning << '\n';
+  }
+
+  std::cout << result.summary.Format() << "Poses:  " << poses_path << " (and poses_tum.txt)\n"
+            << "Frames: " << arguments.out << "/frames.csv\n"
+            << "Config: " << config_path << '\n';
+  if (!report.gt_world_from_cam.empty()) {
+    std::cout << "Ground truth of these frames: " << arguments.out << "/gt_poses_kitti.txt\n";
+  }
+  if (evaluation) {
+    const TrajectoryEvaluation& e = *evaluation;
+    std::cout << "Metrics: KITTI t_err "
+              << (e.kitti.t_err ? std::to_string(KittiTErrPercent(*e.kitti.t_err)) + " %"
+                                : std::string("n/a (too short)"))
+              << ", ATE(se3) " << e.errors.ate_se3_m << " m, length ratio "
+              << (e.errors.length_ratio ? std::to_string(*e.errors.length_ratio) : "n/a") << '\n';
+  }
+  for (const std::string& path : written) std::cout << "Wrote:  " << path << '\n';
+}
 
 void RegisterRunCommand(CLI::App& app) {
   auto arguments = std::make_shared<RunArguments>();
   CLI::App* command = app.add_subcommand(
       "run",
-      "Run the monocular visual odometry on a sequence and write OUT/poses_kitti.txt (one "
-      "world_from_cam row per input frame, the first frame is the world; written and flushed "
-      "frame by frame) and OUT/frames.csv (per-frame status, counts and stage times in ms).");
-  command
-      ->add_option("--kitti", arguments->kitti, "KITTI odometry sequence folder (.../sequences/NN)")
-      ->required();
-  command
-      ->add_option("--scale", arguments->scale,
-                   "Where each step's length comes from: road = the road plane and the camera "
-                   "height h0 (the paper's method; per-frame diagnostics in frames.csv), "
-                   "oracle = the ground truth's step length (needs .../poses/NN.txt; isolates "
-                   "the frontend's error)")
-      ->capture_default_str();
-  command->add_option("--h0", arguments->h0,
-                      "Camera height above the road in metres (default: the sequence's "
-                      "camera.yaml, else KITTI's 1.65)");
+      "Run the monocular visual odometry with road-plane scale on a sequence. Writes, while it "
+      "runs (a crash or Ctrl-C leaves the frames before it intact): OUT/poses_kitti.txt (one "
+      "world_from_cam row per input frame, the first frame is the world), OUT/poses_tum.txt "
+      "(the same with timestamps), OUT/frames.csv (per frame: status, tracks, inliers, points "
+      "after each scale stage, plane n and h, raw and filtered scale, ms per stage), "
+      "OUT/config_used.yaml (every option; --config it to repeat the run); at the end "
+      "OUT/report.html and, with ground truth, OUT/metrics.json and OUT/gt_poses_kitti.txt.");
+  command->add_option("--kitti", arguments->kitti,
+                      "KITTI odometry sequence folder (.../sequences/NN; ground truth from "
+                      "../../poses/NN.txt when present)");
+  command->add_option("--images", arguments->images,
+                      "Folder of images (png/jpg, sorted by name); needs --camera");
+  command->add_option("--video", arguments->video, "Video file; needs --camera");
+  command->add_option("--camera", arguments->camera,
+                      "Camera YAML (Camera: fx fy cx cy width height h0), for --images/--video");
+  command->add_option("--config", arguments->config,
+                      "Config YAML with Camera:, Frontend:, Scale:, Segmentation: blocks "
+                      "(config/kitti.yaml lists every key with the paper's defaults); command-line "
+                      "options override it (default: none, the paper's defaults)");
+  command->add_option("--model", arguments->model,
+                      "Segmentation model YAML (default: config/models/espnetv2_512x256.yaml with "
+                      "the shared network; without it, no segmentation and a note)");
+  command->add_option("--labels", arguments->labels,
+                      "Folder of precomputed label PNGs (<frame name>.png, Cityscapes train ids) "
+                      "instead of a network");
   command->add_flag("--no-segmentation", arguments->no_segmentation,
-                    "Run without semantic segmentation (features on the whole image). The only "
-                    "mode for now: the flag is accepted and changes nothing (default: on)");
-  command
-      ->add_option("--detector", arguments->detector,
-                   "Feature detector: sift (the paper's), orb, brisk, akaze or fast")
-      ->capture_default_str();
+                    "Run without segmentation: features anywhere, every triangulated point a "
+                    "road candidate (the paper's ablation)");
+  command->add_option("--scale", arguments->scale,
+                      "Where each step's length comes from: road = the road plane and h0 (the "
+                      "paper's method), oracle = the ground truth's step length (default: road, "
+                      "or the config's Scale.source)");
+  command->add_option("--h0", arguments->h0,
+                      "Camera height above the road in metres (default: the config's Camera.h0, "
+                      "the camera YAML's, the sequence's camera.yaml, else KITTI's 1.65)");
+  command->add_option("--detector", arguments->detector,
+                      "Feature detector: sift (the paper's), orb, brisk, akaze or fast (default: "
+                      "sift, or the config's Frontend.detector)");
   command->add_option("--frames", arguments->frames,
                       "Frames to process: A:B (A..B-1), A: or :B (default: all)");
   command->add_option("--out", arguments->out, "Output folder (created when missing)")->required();
+  command->add_flag("--sequential", arguments->sequential,
+                    "Run the stages one after the other on one thread (same output, slower; "
+                    "default: segmentation, frontend and scale on their own threads)");
   command->callback([arguments] { RunRun(*arguments); });
 }
 

@@ -23,7 +23,10 @@ PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult&
     *this = PoseIntegrator();
     return PoseUpdate::kFirst;
   }
-  if (scale.valid) last_length_ = scale.step_length_m;
+  if (scale.valid) {
+    last_length_ = scale.step_length_m;
+    has_scale_ = true;
+  }
 
   PoseUpdate update;
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();

@@ -25,7 +25,9 @@ std::string PoseUpdateName(PoseUpdate update);
 // world_from_cam[t] = world_from_cam[t-1] * inverse(cur_from_prev[t]).
 //
 // The step length comes from the scale source; when it has none for a step, the last valid
-// length is used (and 0 before any). The degenerate frames are handled as the frontend's
+// length is used. Before the first valid length the steps have unit length: the trajectory
+// then has the measured shape at an arbitrary scale (flagged "unscaled" by the pipeline),
+// which says more than a camera standing still. The degenerate frames are handled as the frontend's
 // status asks: a stationary frame keeps the pose (a stop must not drift); a pure rotation
 // turns the camera and keeps moving along the last measured direction (a car turning slowly
 // still moves forward, and its direction in the camera frame changes little from one frame
@@ -40,13 +42,16 @@ class PoseIntegrator {
   const Rigid3d& cur_from_prev() const { return cur_from_prev_; }
   // The length of the last step (metres).
   double step_length() const { return cur_from_prev_.translation().norm(); }
+  // Whether a valid length has been applied since the first frame.
+  bool has_scale() const { return has_scale_; }
 
  private:
   Rigid3d world_from_cam_ = Rigid3d::Identity();
   Rigid3d cur_from_prev_ = Rigid3d::Identity();
   Eigen::Matrix3d last_rotation_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d last_direction_ = Eigen::Vector3d::Zero();
-  double last_length_ = 0.0;
+  double last_length_ = 1.0;
+  bool has_scale_ = false;
 };
 
 }  // namespace roadscale

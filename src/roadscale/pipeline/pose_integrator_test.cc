@@ -93,5 +93,19 @@ TEST(PoseIntegrator, NothingMovesBeforeTheFirstEstimate) {
   EXPECT_TRUE(integrator.world_from_cam().isApprox(Rigid3d::Identity()));
 }
 
+TEST(PoseIntegrator, StepsHaveUnitLengthUntilTheFirstValidScale) {
+  PoseIntegrator integrator;
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
+  const Eigen::Vector3d forward = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(integrator.Apply(Motion(MotionStatus::kOk, kIdentity, -forward), ScaleResult()),
+            PoseUpdate::kMotion);
+  EXPECT_FALSE(integrator.has_scale());
+  EXPECT_NEAR(integrator.step_length(), 1.0, 1e-12);
+  integrator.Apply(Motion(MotionStatus::kOk, kIdentity, -forward), Length(0.25));
+  EXPECT_TRUE(integrator.has_scale());
+  EXPECT_NEAR(integrator.step_length(), 0.25, 1e-12);
+  EXPECT_NEAR(integrator.world_from_cam().translation().z(), 1.25, 1e-12);
+}
+
 }  // namespace
 }  // namespace roadscale

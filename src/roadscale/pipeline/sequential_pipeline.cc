@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -39,8 +40,10 @@ void PipelineOptions::Check() const { frontend.Check(); }
 
 std::string FrameRecordCsvHeader() {
   return "index,timestamp,motion_status,pose_update,tracks,correspondences,inliers,detected,"
-         "inlier_ratio,flow_px,parallax_px,scale_valid,step_length_m,scale_status,load_ms,"
-         "tracking_ms,detection_ms,motion_ms,scale_ms,total_ms";
+         "dropped_dynamic,road_mask_px,inlier_ratio,flow_px,parallax_px,scale_valid,"
+         "step_length_m,scale_status,status,load_ms,segmentation_ms,tracking_ms,detection_ms,"
+         "motion_ms,"
+         "scale_ms,total_ms";
 }
 
 std::string FormatFrameRecordCsv(const FrameRecord& r) {
@@ -48,11 +51,12 @@ std::string FormatFrameRecordCsv(const FrameRecord& r) {
   out << r.index << ',' << std::setprecision(17) << r.timestamp << ',' << std::setprecision(6)
       << MotionStatusName(r.motion_status) << ',' << PoseUpdateName(r.pose_update) << ','
       << r.num_tracks << ',' << r.num_correspondences << ',' << r.num_inliers << ','
-      << r.num_detected << ',' << r.inlier_ratio << ',' << r.flow_px << ',' << r.parallax_px << ','
+      << r.num_detected << ',' << r.num_dropped_dynamic << ',' << r.road_mask_px << ','
+      << r.inlier_ratio << ',' << r.flow_px << ',' << r.parallax_px << ','
       << (r.scale_valid ? 1 : 0) << ',' << std::setprecision(9) << r.step_length_m << ','
-      << std::setprecision(6) << '"' << r.scale_status << '"' << ',' << r.load_ms << ','
-      << r.tracking_ms << ',' << r.detection_ms << ',' << r.motion_ms << ',' << r.scale_ms << ','
-      << r.total_ms;
+      << std::setprecision(6) << '"' << r.scale_status << '"' << ',' << r.status << ',' << r.load_ms
+      << ',' << r.segmentation_ms << ',' << r.tracking_ms << ',' << r.detection_ms << ','
+      << r.motion_ms << ',' << r.scale_ms << ',' << r.total_ms;
   return out.str();
 }
 
@@ -67,53 +71,91 @@ SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& s
                                 (error ? " (" + error.message() + ")" : std::string()));
   }
   poses_path_ = (std::filesystem::path(out_dir) / "poses_kitti.txt").string();
+  tum_path_ = (std::filesystem::path(out_dir) / "poses_tum.txt").string();
   records_path_ = (std::filesystem::path(out_dir) / "frames.csv").string();
   poses_ = OpenOutput(poses_path_);
+  tum_ = OpenOutput(tum_path_);
   records_ = OpenOutput(records_path_);
   const std::string scale_columns = scale_.DiagnosticsCsvHeader();
   WriteLine(records_, records_path_,
             FrameRecordCsvHeader() + (scale_columns.empty() ? "" : "," + scale_columns));
 }
 
-FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms) {
+TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
   const Clock::time_point start = Clock::now();
-  FrameRecord record;
+  const Frame& frame = input.frame;
+  const SegmentationResult& segmentation = input.segmentation;
+  TrackedFrame tracked;
+  FrameRecord& record = tracked.record;
   record.index = frame.index;
   record.timestamp = frame.timestamp;
-  record.load_ms = load_ms;
+  record.load_ms = input.load_ms;
+  record.segmentation_ms = segmentation.milliseconds;
+  if (!segmentation.road_mask.empty()) {
+    record.road_mask_px = cv::countNonZero(segmentation.road_mask);
+    tracked.road_mask = segmentation.road_mask;
+  }
 
   cv::Mat grey = frame.image;
   if (grey.channels() == 3) cv::cvtColor(frame.image, grey, cv::COLOR_BGR2GRAY);
-  const FrontendFrame result = frontend_.ProcessFrame(static_cast<int>(frame.index), grey);
+  tracked.frontend = frontend_.ProcessFrame(static_cast<int>(frame.index), grey,
+                                            segmentation.static_mask, segmentation.dynamic_mask);
+  const FrontendFrame& result = tracked.frontend;
   record.motion_status = result.motion.status;
   record.num_tracks = result.num_tracks;
   record.num_correspondences = static_cast<int>(result.correspondences.size());
   record.num_inliers = result.motion.num_inliers;
   record.num_detected = result.tracker.detected;
+  record.num_dropped_dynamic = result.tracker.dropped_dynamic;
   record.inlier_ratio = result.motion.inlier_ratio;
   record.flow_px = result.motion.flow_px;
   record.parallax_px = result.motion.parallax_px;
   record.tracking_ms = result.tracker.pyramid_ms + result.tracker.tracking_ms;
   record.detection_ms = result.tracker.detection_ms;
   record.motion_ms = result.motion_ms;
+  record.total_ms = MillisecondsSince(start) + input.load_ms + segmentation.milliseconds;
+  return tracked;
+}
+
+FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
+  const Clock::time_point start = Clock::now();
+  FrameRecord& record = tracked.record;
+  const FrontendFrame& result = tracked.frontend;
 
   ScaleResult scale;
   if (result.motion.status != MotionStatus::kFirstFrame) {
     const Clock::time_point scale_start = Clock::now();
     ScaleQuery query;
-    query.frame_index = frame.index;
+    query.frame_index = record.index;
     query.position = position_;
     query.frontend = &result;
+    query.prev_road_mask = prev_road_mask_;
     scale = scale_.StepLength(query);
     record.scale_ms = MillisecondsSince(scale_start);
   }
+  // The scale of the step into the next frame uses this frame's road (Alg. 1 selects the
+  // road points in the earlier image of the pair).
+  prev_road_mask_ = tracked.road_mask;
   record.scale_valid = scale.valid;
   record.scale_status = scale.status;
+  record.scale_diagnostics_csv = scale.diagnostics_csv;
   record.pose_update = integrator_.Apply(result.motion, scale);
   record.step_length_m = integrator_.step_length();
+  switch (record.pose_update) {
+    case PoseUpdate::kFirst:
+      record.status = "first";
+      break;
+    case PoseUpdate::kKept:
+      record.status = "stationary";
+      break;
+    default:
+      record.status = !integrator_.has_scale() ? "unscaled" : scale.valid ? "ok" : "held";
+      break;
+  }
 
   WriteLine(poses_, poses_path_, FormatKittiRow(integrator_.world_from_cam()));
-  record.total_ms = MillisecondsSince(start) + load_ms;
+  WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, integrator_.world_from_cam()));
+  record.total_ms += MillisecondsSince(start);
   // The scale source's own columns, left empty in frames it did not see.
   const std::string scale_columns = scale_.DiagnosticsCsvHeader();
   std::string row = FormatFrameRecordCsv(record);
@@ -127,12 +169,22 @@ FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms)
   return record;
 }
 
+FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms,
+                                             const SegmentationResult& segmentation) {
+  SegmentedFrame input;
+  input.frame = frame;
+  input.segmentation = segmentation;
+  input.load_ms = load_ms;
+  return Integrate(Track(input));
+}
+
 void RunSummary::Add(const FrameRecord& record) {
   const double n = static_cast<double>(frames);
   const auto update_mean = [&](double* mean, double value) {
     *mean = (*mean * n + value) / (n + 1);
   };
   update_mean(&mean_load_ms, record.load_ms);
+  update_mean(&mean_segmentation_ms, record.segmentation_ms);
   update_mean(&mean_tracking_ms, record.tracking_ms);
   update_mean(&mean_detection_ms, record.detection_ms);
   update_mean(&mean_motion_ms, record.motion_ms);
@@ -156,6 +208,7 @@ void RunSummary::Add(const FrameRecord& record) {
       break;
   }
   if (record.num_detected > 0) ++detection_frames;
+  if (record.scale_valid) ++scaled_frames;
 }
 
 std::string RunSummary::Format() const {
@@ -163,29 +216,27 @@ std::string RunSummary::Format() const {
   out << std::fixed << std::setprecision(1);
   out << "Frames: " << frames << " (motion " << motion_frames << ", kept (stationary) "
       << kept_frames << ", rotation only " << rotation_only_frames << ", constant velocity "
-      << constant_velocity_frames << "; re-detection in " << detection_frames << ")\n";
-  out << "Mean ms per frame: load " << mean_load_ms << ", tracking " << mean_tracking_ms
-      << ", detection " << mean_detection_ms << ", motion " << mean_motion_ms << ", scale "
-      << mean_scale_ms << ", total " << mean_total_ms;
-  if (mean_total_ms > 0.0) out << " (" << 1000.0 / mean_total_ms << " Hz)";
+      << constant_velocity_frames << "; re-detection in " << detection_frames
+      << "; scaled by the scale source in " << scaled_frames << ")\n";
+  out << "Mean ms per frame: load " << mean_load_ms << ", segmentation " << mean_segmentation_ms
+      << ", tracking " << mean_tracking_ms << ", detection " << mean_detection_ms << ", motion "
+      << mean_motion_ms << ", scale " << mean_scale_ms << ", total " << mean_total_ms;
   out << '\n';
+  if (wall_s > 0.0 && frames > 0) {
+    out << "Wall clock: " << std::setprecision(2) << wall_s << " s, " << std::setprecision(1)
+        << static_cast<double>(frames) / wall_s << " frames/s end to end\n";
+  }
   return out.str();
 }
 
 RunSummary RunSequentialPipeline(FrameSource& source, ScaleSource& scale,
                                  const PipelineOptions& options, const std::string& out_dir,
                                  const std::function<void(const FrameRecord&)>& on_frame) {
-  SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
-  RunSummary summary;
-  Frame frame;
-  while (true) {
-    const Clock::time_point load_start = Clock::now();
-    if (!source.Next(&frame)) break;
-    const FrameRecord record = pipeline.ProcessFrame(frame, MillisecondsSince(load_start));
-    summary.Add(record);
-    if (on_frame) on_frame(record);
-  }
-  return summary;
+  NoSegmenter no_segmentation;
+  RunPipelineOptions run_options;
+  run_options.threaded = false;
+  return RunPipeline(source, no_segmentation, scale, options, out_dir, run_options, on_frame)
+      .summary;
 }
 
 }  // namespace roadscale

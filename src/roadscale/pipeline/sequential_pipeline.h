@@ -9,6 +9,7 @@
 #include "roadscale/io/frame_source.h"
 #include "roadscale/pipeline/pose_integrator.h"
 #include "roadscale/pipeline/scale_source.h"
+#include "roadscale/segmentation/segmentation_result.h"
 
 namespace roadscale {
 
@@ -28,42 +29,82 @@ struct FrameRecord {
   int num_tracks = 0;           // live tracks after this frame
   int num_correspondences = 0;  // tracks seen in the previous and this frame
   int num_inliers = 0;
-  int num_detected = 0;  // new tracks started in this frame
+  int num_detected = 0;         // new tracks started in this frame
+  int num_dropped_dynamic = 0;  // tracks that landed on the dynamic mask
+  int road_mask_px = -1;        // road pixels of this frame's mask; -1 without one
   double inlier_ratio = 0.0;
   double flow_px = 0.0;
   double parallax_px = 0.0;
   bool scale_valid = false;
   double step_length_m = 0.0;  // length of the applied step
   std::string scale_status;
+  // The frame in one word: "first", "ok" (scaled in this frame), "stationary" (pose kept),
+  // "held" (the last valid scale reused: no motion to scale, too few road points, ...), or
+  // "unscaled" (no valid scale yet: the step has unit length, an arbitrary scale).
+  std::string status;
+  // The scale source's own columns for this frame (ScaleResult::diagnostics_csv).
+  std::string scale_diagnostics_csv;
 
-  double load_ms = 0.0;       // decoding the image
-  double tracking_ms = 0.0;   // image pyramid + KLT both ways
-  double detection_ms = 0.0;  // feature detection (0 when no re-detection)
-  double motion_ms = 0.0;     // two-view motion
+  double load_ms = 0.0;          // decoding the image
+  double segmentation_ms = 0.0;  // the segmenter (network or label file; 0 when reused)
+  double tracking_ms = 0.0;      // image pyramid + KLT both ways
+  double detection_ms = 0.0;     // feature detection (0 when no re-detection)
+  double motion_ms = 0.0;        // two-view motion
   double scale_ms = 0.0;
-  double total_ms = 0.0;  // the whole frame, writing included
+  // The sum of the stages' times and the writing. With the threaded runner the stages
+  // overlap, so the run's frame rate is not 1000 / total_ms.
+  double total_ms = 0.0;
 };
 
-// The header and one row of OUT/frames.csv.
+// The header and one row of OUT/frames.csv (without the scale source's columns).
 std::string FrameRecordCsvHeader();
 std::string FormatFrameRecordCsv(const FrameRecord& record);
 
-// The first, sequential system: for each frame, frontend -> two-view motion -> scale source ->
-// pose. Owns the frontend, the pose integrator and the output files.
+// One frame as the segmentation stage hands it on: the image and what segmentation knows
+// of it (empty masks without segmentation).
+struct SegmentedFrame {
+  Frame frame;
+  SegmentationResult segmentation;
+  double load_ms = 0.0;
+};
+
+// One frame as the frontend stage hands it on.
+struct TrackedFrame {
+  FrameRecord record;  // the fields up to the frontend's filled in
+  FrontendFrame frontend;
+  cv::Mat road_mask;  // this frame's road mask, for the next frame's scale query
+};
+
+// The per-frame logic of the system, for each frame: frontend (features outside the static
+// mask, tracks landing on moving objects dropped) -> two-view motion -> scale source (with
+// the previous frame's road mask) -> pose -> output rows. Owns the frontend, the pose
+// integrator and the output files.
+//
+// The work is split in two stages, Track (the frontend) and Integrate (scale, pose,
+// writing), which touch disjoint state: one thread may run Track on frame k+1 while another
+// runs Integrate on frame k. Each stage must see the frames in order. ProcessFrame runs both.
 class SequentialPipeline {
  public:
-  // Creates `out_dir` when needed and opens OUT/poses_kitti.txt and OUT/frames.csv. Throws
-  // Error on invalid options or camera, or when the files cannot be created.
+  // Creates `out_dir` when needed and opens OUT/poses_kitti.txt, OUT/poses_tum.txt and
+  // OUT/frames.csv. Throws Error on invalid options or camera, or when the files cannot be
+  // created.
   SequentialPipeline(const CameraSetup& camera, ScaleSource& scale, const PipelineOptions& options,
                      const std::string& out_dir);
 
-  // Processes the next frame and appends its pose row and record, flushed, so that a run
-  // stopped at frame k leaves the rows of frames before k intact. Frames must come in order.
-  // `load_ms`: how long decoding the frame took, for the record.
-  FrameRecord ProcessFrame(const Frame& frame, double load_ms = 0.0);
+  // The frontend stage. Throws Error on an image or mask of the wrong size.
+  TrackedFrame Track(const SegmentedFrame& frame);
+
+  // The scale and pose stage: appends the frame's pose rows and record, flushed, so that a
+  // run stopped at frame k leaves the rows of frames before k intact.
+  FrameRecord Integrate(TrackedFrame tracked);
+
+  // Track then Integrate. `load_ms`: how long decoding the frame took, for the record.
+  FrameRecord ProcessFrame(const Frame& frame, double load_ms = 0.0,
+                           const SegmentationResult& segmentation = {});
 
   const Rigid3d& world_from_cam() const { return integrator_.world_from_cam(); }
   const std::string& poses_path() const { return poses_path_; }
+  const std::string& tum_path() const { return tum_path_; }
   const std::string& records_path() const { return records_path_; }
 
  private:
@@ -71,9 +112,12 @@ class SequentialPipeline {
   MonoFrontend frontend_;
   PoseIntegrator integrator_;
   size_t position_ = 0;
+  cv::Mat prev_road_mask_;
   std::string poses_path_;
+  std::string tum_path_;
   std::string records_path_;
   std::ofstream poses_;
+  std::ofstream tum_;
   std::ofstream records_;
 };
 
@@ -85,20 +129,25 @@ struct RunSummary {
   size_t rotation_only_frames = 0;
   size_t constant_velocity_frames = 0;
   size_t detection_frames = 0;  // frames with a re-detection
+  size_t scaled_frames = 0;     // frames whose step length came from the scale source
   double mean_load_ms = 0.0;
+  double mean_segmentation_ms = 0.0;
   double mean_tracking_ms = 0.0;
   double mean_detection_ms = 0.0;  // over all frames (detection is not run every frame)
   double mean_motion_ms = 0.0;
   double mean_scale_ms = 0.0;
   double mean_total_ms = 0.0;
+  // Wall-clock seconds of the whole run (0 when not measured).
+  double wall_s = 0.0;
 
   void Add(const FrameRecord& record);
   // Several lines for the end of a run.
   std::string Format() const;
 };
 
-// Reads every frame of `source` through a SequentialPipeline writing to `out_dir`; calls
-// `on_frame` after each frame. Returns the summary.
+// Reads every frame of `source` through a SequentialPipeline without segmentation, writing
+// to `out_dir`; calls `on_frame` after each frame. Returns the summary. (RunPipeline in
+// run_pipeline.h adds segmentation and threads.)
 RunSummary RunSequentialPipeline(FrameSource& source, ScaleSource& scale,
                                  const PipelineOptions& options, const std::string& out_dir,
                                  const std::function<void(const FrameRecord&)>& on_frame = {});

@@ -1,0 +1,252 @@
+#include "roadscale/pipeline/config_yaml.h"
+
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+// One key of the file: how to read it from a node, how to write the current value.
+struct Key {
+  std::string name;
+  std::function<void(const YAML::Node&)> read;  // throws YAML::Exception on a wrong type
+  std::function<std::string()> write;
+};
+
+struct Block {
+  std::string name;
+  std::vector<Key> keys;
+};
+
+std::string FormatDouble(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+
+template <typename T>
+Key Scalar(const std::string& name, T* value) {
+  return {name, [value](const YAML::Node& node) { *value = node.as<T>(); },
+          [value] {
+            if constexpr (std::is_same_v<T, double>) {
+              return FormatDouble(*value);
+            } else if constexpr (std::is_same_v<T, bool>) {
+              return std::string(*value ? "true" : "false");
+            } else if constexpr (std::is_same_v<T, std::string>) {
+              return YAML::Dump(YAML::Node(*value));
+            } else {
+              return std::to_string(*value);
+            }
+          }};
+}
+
+template <typename T>
+Key Optional(const std::string& name, std::optional<T>* value) {
+  return {name, [value](const YAML::Node& node) { *value = node.as<T>(); },
+          [value] {
+            if (!value->has_value()) return std::string("~");
+            if constexpr (std::is_same_v<T, double>) return FormatDouble(**value);
+            return std::to_string(**value);
+          }};
+}
+
+// An enum written as one of `names` (index = the enum's value).
+template <typename E>
+Key Enum(const std::string& name, E* value, std::vector<std::string> names) {
+  return {name,
+          [value, names, name](const YAML::Node& node) {
+            const std::string text = node.as<std::string>();
+            for (size_t i = 0; i < names.size(); ++i) {
+              if (names[i] == text) {
+                *value = static_cast<E>(i);
+                return;
+              }
+            }
+            std::string expected;
+            for (const std::string& n : names) expected += (expected.empty() ? "" : ", ") + n;
+            throw YAML::Exception(node.Mark(), name + ": '" + text + "' is not one of " + expected);
+          },
+          [value, names] { return names[static_cast<size_t>(*value)]; }};
+}
+
+std::vector<Block> Blocks(RunConfig& c) {
+  FrontendOptions& f = c.pipeline.frontend;
+  FeatureDetectorOptions& d = f.tracker.detector;
+  KltOptions& k = f.tracker.klt;
+  TwoViewMotionOptions& m = f.motion;
+  ScaleEstimatorOptions& s = c.scale;
+  SegmentationOptions& g = c.segmentation;
+  return {
+      {"Camera",
+       {Optional("fx", &c.camera.fx), Optional("fy", &c.camera.fy), Optional("cx", &c.camera.cx),
+        Optional("cy", &c.camera.cy), Optional("width", &c.camera.width),
+        Optional("height", &c.camera.height), Optional("h0", &c.camera.h0)}},
+      {"Frontend",
+       {Enum("detector", &d.type, {"sift", "orb", "brisk", "akaze", "fast"}),
+        Scalar("cell_size_px", &d.cell_size_px),
+        Scalar("max_per_cell", &d.max_per_cell),
+        Scalar("min_distance_px", &d.min_distance_px),
+        Scalar("sift_half_resolution", &d.sift_half_resolution),
+        Scalar("border_px", &d.border_px),
+        Scalar("sift_contrast_threshold", &d.sift_contrast_threshold),
+        Scalar("corner_threshold", &d.corner_threshold),
+        Scalar("redetect_below", &f.tracker.redetect_below),
+        Scalar("klt_window_size", &k.window_size),
+        Scalar("klt_pyramid_levels", &k.pyramid_levels),
+        Scalar("klt_max_iterations", &k.max_iterations),
+        Scalar("klt_epsilon", &k.epsilon),
+        Scalar("klt_min_eigen_threshold", &k.min_eigen_threshold),
+        Scalar("klt_max_forward_backward_error_px", &k.max_forward_backward_error_px),
+        Scalar("predict_with_rotation", &f.predict_with_rotation),
+        Scalar("drop_outliers", &f.drop_outliers),
+        Scalar("ransac_threshold_px", &m.ransac_threshold_px),
+        Scalar("ransac_confidence", &m.ransac_confidence),
+        Scalar("ransac_max_iterations", &m.ransac_max_iterations),
+        Scalar("seed", &m.seed),
+        Scalar("min_correspondences", &m.min_correspondences),
+        Scalar("min_inliers", &m.min_inliers),
+        Scalar("min_inlier_ratio", &m.min_inlier_ratio),
+        Scalar("stationary_flow_px", &m.stationary_flow_px),
+        Scalar("min_parallax_px", &m.min_parallax_px),
+        Scalar("refine", &m.refine),
+        Scalar("refinement_inlier_sigmas", &m.refinement_inlier_sigmas),
+        Scalar("refinement_epipole_exclusion_deg", &m.refinement_epipole_exclusion_deg),
+        Scalar("refinement_max_iterations", &m.refinement.max_iterations),
+        Enum("refinement_loss", &m.refinement.loss, {"huber", "cauchy"}),
+        Scalar("refinement_loss_scale_px", &m.refinement.loss_scale_px),
+        Scalar("refinement_relative_tolerance", &m.refinement.relative_tolerance)}},
+      {"Scale",
+       {Scalar("source", &c.scale_source),
+        Scalar("use_segmentation", &s.use_segmentation),
+        Scalar("use_horizon", &s.use_horizon),
+        Scalar("min_angle_below_horizon_deg", &s.min_angle_below_horizon_deg),
+        Scalar("use_depth_vote", &s.use_depth_vote),
+        Scalar("use_road_model_check", &s.use_road_model_check),
+        Scalar("use_filter", &s.use_filter),
+        Scalar("min_parallax_deg", &s.triangulation.min_parallax_deg),
+        Scalar("max_reprojection_error_px", &s.triangulation.max_reprojection_error_px),
+        Enum("vote_edge_visit", &s.depth_vote.edge_visit, {"per_triangle", "per_edge"}),
+        Scalar("vote_min_vote", &s.depth_vote.min_vote),
+        Enum("road_model_reference", &s.road_model.reference, {"motion", "fixed_pitch"}),
+        Scalar("road_model_camera_pitch_deg", &s.road_model.camera_pitch_deg),
+        Scalar("road_model_max_angle_deg", &s.road_model.max_angle_deg),
+        Scalar("ransac_min_points", &s.ransac.min_points),
+        Scalar("ransac_inlier_threshold", &s.ransac.inlier_threshold),
+        Scalar("ransac_max_iterations", &s.ransac.max_iterations),
+        Scalar("ransac_confidence", &s.ransac.confidence),
+        Scalar("ransac_seed", &s.ransac.seed),
+        Scalar("filter_window", &s.filter.window),
+        Scalar("filter_gaussian_sigma", &s.filter.gaussian_sigma),
+        Scalar("filter_max_change_per_frame", &s.filter.max_change_per_frame)}},
+      {"Segmentation",
+       {Scalar("model", &g.model), Scalar("labels", &c.labels), Scalar("every", &g.every),
+        Scalar("dnn_threads", &g.dnn_threads),
+        Scalar("dynamic_dilation_px", &g.masks.dynamic_dilation_px),
+        Scalar("road_erosion_px", &g.masks.road_erosion_px)}},
+  };
+}
+
+[[noreturn]] void ThrowAt(const std::string& path, const YAML::Mark& mark,
+                          const std::string& message) {
+  if (mark.is_null()) ThrowFileError(path, message);
+  throw Error(path + ":" + std::to_string(mark.line + 1) + ": " + message);
+}
+
+std::string KeyNames(const Block& block) {
+  std::string names;
+  for (const Key& key : block.keys) names += (names.empty() ? "" : ", ") + key.name;
+  return names;
+}
+
+}  // namespace
+
+void ReadRunConfig(const std::string& path, RunConfig* config) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    ThrowFileError(path, "cannot read the config file");
+  } catch (const YAML::Exception& e) {
+    ThrowAt(path, e.mark, "YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) return;
+  if (!root.IsMap())
+    ThrowAt(path, root.Mark(), "expected blocks Camera:, Frontend:, Scale:, Segmentation:");
+  std::vector<Block> blocks = Blocks(*config);
+  for (const auto& entry : root) {
+    const std::string block_name = entry.first.as<std::string>();
+    Block* block = nullptr;
+    for (Block& b : blocks) {
+      if (b.name == block_name) block = &b;
+    }
+    if (block == nullptr) {
+      ThrowAt(
+          path, entry.first.Mark(),
+          "unknown block '" + block_name + "' (expected Camera, Frontend, Scale or Segmentation)");
+    }
+    if (entry.second.IsNull()) continue;
+    if (!entry.second.IsMap())
+      ThrowAt(path, entry.second.Mark(), block_name + ": expected a mapping of keys");
+    for (const auto& item : entry.second) {
+      const std::string key_name = item.first.as<std::string>();
+      const Key* key = nullptr;
+      for (const Key& k : block->keys) {
+        if (k.name == key_name) key = &k;
+      }
+      if (key == nullptr) {
+        ThrowAt(path, item.first.Mark(),
+                "unknown key '" + block_name + "." + key_name + "' (expected one of " +
+                    KeyNames(*block) + ")");
+      }
+      try {
+        if (item.second.IsNull()) {
+          ThrowAt(path, item.second.Mark(), block_name + "." + key_name + " has no value");
+        }
+        key->read(item.second);
+      } catch (const YAML::Exception& e) {
+        ThrowAt(path, item.second.Mark(),
+                "invalid value for " + block_name + "." + key_name +
+                    (e.msg.find(':') != std::string::npos ? " (" + e.msg + ")" : std::string()));
+      }
+    }
+  }
+  const RunConfig::Camera& camera = config->camera;
+  const int given = camera.fx.has_value() + camera.fy.has_value() + camera.cx.has_value() +
+                    camera.cy.has_value() + camera.width.has_value() + camera.height.has_value();
+  if (given != 0 && given != 6) {
+    ThrowFileError(path, "Camera: give all of fx, fy, cx, cy, width, height, or none");
+  }
+}
+
+std::string FormatRunConfig(const RunConfig& config) {
+  RunConfig copy = config;
+  std::ostringstream out;
+  out << "# Every option of this run (roadscale run --config THIS_FILE repeats it).\n";
+  for (const Block& block : Blocks(copy)) {
+    out << block.name << ":\n";
+    for (const Key& key : block.keys) {
+      const std::string value = key.write();
+      if (value == "~") continue;  // an optional key without a value
+      out << "  " << key.name << ": " << value << '\n';
+    }
+  }
+  return out.str();
+}
+
+void WriteRunConfig(const std::string& path, const RunConfig& config) {
+  std::ofstream file(path, std::ios::out | std::ios::trunc);
+  file << FormatRunConfig(config);
+  file.flush();
+  if (!file) ThrowFileError(path, "cannot write the file");
+}
+
+}  // namespace roadscale

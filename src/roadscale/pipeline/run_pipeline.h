@@ -1,0 +1,53 @@
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "roadscale/io/frame_source.h"
+#include "roadscale/pipeline/scale_source.h"
+#include "roadscale/pipeline/sequential_pipeline.h"
+#include "roadscale/segmentation/segmenter.h"
+
+namespace roadscale {
+
+struct RunPipelineOptions {
+  // Run the three stages (1: image loading + segmentation, 2: frontend, 3: scale + pose +
+  // writing) on their own threads, connected by bounded queues, so that their costs overlap
+  // (the paper runs the scale "as a separate thread alongside motion estimation"). Each stage
+  // sees the frames in order and owns its state, so the output does not depend on thread
+  // timing: the same input gives byte-identical poses with or without threads.
+  bool threaded = true;
+  // Frames a queue between two stages holds; bounds the memory to a few images whatever the
+  // sequence's length. 2 lets a stage run ahead by one frame while the next is handed over.
+  size_t queue_capacity = 2;
+
+  void Check() const;
+};
+
+// How a run ended.
+struct PipelineRunResult {
+  RunSummary summary;
+  // True when `stop` was set: the frames read before it were processed and written.
+  bool interrupted = false;
+};
+
+// The frame's name for segmenters that read precomputed labels: the image file's stem
+// ("000042"), or the index as %06d for a video frame.
+std::string FrameName(const Frame& frame);
+
+// Runs every frame of `source` through segmentation and a SequentialPipeline writing to
+// `out_dir` (see SequentialPipeline for the files). `on_frame` is called after each frame
+// is written, in order, from the writing stage. `stop` (may be null) is read before each
+// frame is loaded: once it is true no new frame is read, the frames already read are
+// finished, and the result says `interrupted`. An error in any stage (a corrupt image, a
+// missing label file) stops the run: the frames before it are finished and written, then
+// the error is thrown.
+PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
+                              const PipelineOptions& options, const std::string& out_dir,
+                              const RunPipelineOptions& run_options = {},
+                              const std::function<void(const FrameRecord&)>& on_frame = {},
+                              const std::atomic<bool>* stop = nullptr);
+
+}  // namespace roadscale
