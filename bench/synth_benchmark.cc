@@ -1,5 +1,6 @@
 // Speed of the synthetic scene renderer (`roadscale synth`): frames per second at KITTI's
-// 1241x376, with 1 and 2 rendering threads, and the cost of writing a frame's PNGs.
+// 1241x376, with 1 and 2 rendering threads, the cost of encoding a frame's PNGs and of
+// building a scene.
 #include <memory>
 #include <vector>
 
@@ -49,14 +50,15 @@ BENCHMARK(BM_SynthRenderFrame)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
-// Encoding one frame's PNGs as `roadscale synth` writes them (grey, labels, depth).
+// Encoding one frame's PNGs as `roadscale synth` writes them (grey, labels, depth, moving).
 void BM_SynthEncodeFramePngs(benchmark::State& state) {
   SceneOptions options = PresetSceneOptions("urban");
   SyntheticScene scene(options, 1);
   const SynthFrame frame = scene.Render(0, false);
   std::vector<uchar> buffer;
   for (auto _ : state) {
-    for (const cv::Mat* image : {&frame.images.grey, &frame.images.labels, &frame.images.depth}) {
+    for (const cv::Mat* image :
+         {&frame.images.grey, &frame.images.labels, &frame.images.depth, &frame.images.moving}) {
       cv::imencode(".png", *image, buffer);
       benchmark::DoNotOptimize(buffer.data());
     }
