@@ -37,7 +37,7 @@ double VariantUnit(uint32_t variant, uint32_t k) {
 // A pulse of the train (period, width, offset) that the point falls into, for per-cell
 // random shades: index of the cell containing x.
 int64_t CellIndex(double x, double period, double offset) {
-  return static_cast<int64_t>(std::floor((x - offset) / period));
+  return static_cast<int64_t>(FastFloor((x - offset) / period));
 }
 
 // A 2-D box-filtered rectangle-grid: cells of size (period_s, period_t) with a rectangle of
@@ -62,8 +62,8 @@ double Cracks(double s, double t, double footprint, double frequency, double wid
 // `cell`, inside it, with probability `density`. Returns the filtered coverage.
 double Spots(double s, double t, double footprint, double cell, double density, double r_min,
              double r_max, uint32_t seed) {
-  const int32_t ci = static_cast<int32_t>(std::floor(s / cell));
-  const int32_t cj = static_cast<int32_t>(std::floor(t / cell));
+  const int32_t ci = static_cast<int32_t>(FastFloor(s / cell));
+  const int32_t cj = static_cast<int32_t>(FastFloor(t / cell));
   const uint32_t h = Hash3(ci, cj, seed);
   if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
   const double radius = r_min + (r_max - r_min) * (Hash32(h) >> 8) / 16777216.0;
@@ -79,8 +79,8 @@ double Spots(double s, double t, double footprint, double cell, double density, 
 // cell_s x cell_t. Returns the filtered coverage and the patch's shade in [-1, 1].
 double Repairs(const TexelQuery& q, double cell_s, double cell_t, double density, uint32_t seed,
                double* shade) {
-  const int32_t ci = static_cast<int32_t>(std::floor(q.s / cell_s));
-  const int32_t cj = static_cast<int32_t>(std::floor(q.t / cell_t));
+  const int32_t ci = static_cast<int32_t>(FastFloor(q.s / cell_s));
+  const int32_t cj = static_cast<int32_t>(FastFloor(q.t / cell_t));
   const uint32_t h = Hash3(ci, cj, seed);
   if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
   auto unit = [&](uint32_t k) { return (Hash32(h + k) >> 8) / 16777216.0; };
@@ -250,7 +250,7 @@ Rgb Brick(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& 
   const double contrast = context.options.facade_contrast;
   const double fp = std::max(q.footprint_s, q.footprint_t);
   const double course = 0.075;
-  const double row = std::floor(q.t / course);
+  const double row = FastFloor(q.t / course);
   const double shift = std::fmod(row, 2.0) == 0.0 ? 0.0 : 0.125;
   const double mortar_t = 1.0 - FilteredPulse(q.t, course, course - 0.012, 0.0, q.footprint_t);
   const double mortar_s = 1.0 - FilteredPulse(q.s, 0.25, 0.238, shift, q.footprint_s);
@@ -368,12 +368,12 @@ double FilteredFbm(double x, double y, double footprint, double frequency, int o
 double FilteredPulse(double x, double period, double width, double offset, double footprint) {
   auto integral = [&](double v) {
     const double shifted = v - offset;
-    const double k = std::floor(shifted / period);
+    const double k = FastFloor(shifted / period);
     return k * width + std::min(shifted - k * period, width);
   };
   if (footprint < 1e-6) {
     const double shifted = x - offset;
-    const double phase = shifted - std::floor(shifted / period) * period;
+    const double phase = shifted - FastFloor(shifted / period) * period;
     return phase < width ? 1.0 : 0.0;
   }
   return (integral(x + 0.5 * footprint) - integral(x - 0.5 * footprint)) / footprint;
