@@ -262,8 +262,9 @@ TwoViewMotion EstimateTwoViewMotion(const std::vector<Correspondence>& correspon
   }
   cv::Mat K;
   cv::eigen2cv(camera.K(), K);
-  // OpenCV's RANSAC draws its samples from cv::theRNG(); seeding it makes the result the
-  // same on every run (the generator is per thread, so other threads are unaffected).
+  // OpenCV 4.6's findEssentialMat RANSAC seeds its own generator (its result does not change
+  // with cv::theRNG()'s state); theRNG (per thread) is seeded anyway so that a version that
+  // draws from it stays deterministic.
   cv::theRNG().state = options.seed;
   cv::Mat ransac_mask;
   const cv::Mat E_all =

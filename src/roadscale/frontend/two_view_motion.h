@@ -60,14 +60,16 @@ struct TwoViewMotionOptions {
   // the direction of the epipole is no longer determined by tracks accurate to ~0.1-0.3 px.
   double min_parallax_px = 1.0;
 
-  // Refine (R, t) on the inliers by least squares on the Sampson error after RANSAC and
-  // recoverPose: the RANSAC model comes from five points only. On synthetic scenes with
-  // 0.1 px noise this takes the direction error from ~1.8 deg to ~0.05 deg (median).
+  // Refine (R, t) by least squares on the Sampson error after RANSAC and the decomposition:
+  // the RANSAC model comes from five points only. On synthetic scenes with 0.1 px noise this
+  // takes the direction error from ~1.8 deg to ~0.05 deg (median), the accuracy of the
+  // least-squares optimum started from the truth.
   bool refine = true;
-  // A second refinement round uses only the correspondences within this many robust
-  // standard deviations (1.4826 x median absolute Sampson error) of the first round's model,
-  // capped at the RANSAC threshold: wrong tracks that happen to pass the loose RANSAC
-  // threshold otherwise bias the direction. 0 = a single round.
+  // After a first round on every correspondence (Cauchy loss at the RANSAC threshold), the
+  // refinement is repeated on the correspondences within this many robust standard
+  // deviations (1.4826 x median absolute Sampson error) of the model, capped at the RANSAC
+  // threshold, until that set is stable: wrong tracks that pass the loose RANSAC threshold
+  // otherwise bias the direction. 0 = the RANSAC threshold.
   double refinement_inlier_sigmas = 3.0;
   // Tracks within this angle (degrees) of the epipole are left out of the refinement. Driving
   // forward, the epipole lies inside the image, and there a wrong track fits the epipolar
@@ -107,7 +109,8 @@ struct TwoViewMotion {
 
 // Relative motion of a calibrated camera between two frames from its correspondences: the
 // stationary and pure-rotation cases are recognised first, then the essential matrix by
-// 5-point RANSAC, recoverPose's cheirality test and an optional Sampson refinement.
+// 5-point RANSAC (cv::findEssentialMat), its decomposition with a cheirality test, and the
+// Sampson refinement.
 // Throws Error on invalid options or camera.
 TwoViewMotion EstimateTwoViewMotion(const std::vector<Correspondence>& correspondences,
                                     const PinholeCamera& camera,
