@@ -515,7 +515,34 @@ std::vector<Configuration> Configurations() {
                       o->corridor.follow_turn = false;
                     },
                     mask});
+    list.push_back({"beyond: inverse-depth refit" + suffix,
+                    [](Options* o) { o->inverse_depth_refit = true; }, mask});
+    list.push_back({"beyond: inverse-depth refit, unweighted" + suffix,
+                    [](Options* o) {
+                      o->inverse_depth_refit = true;
+                      o->inverse_depth_weighting = false;
+                    },
+                    mask});
+    list.push_back({"beyond: corridor + inverse-depth refit" + suffix,
+                    [](Options* o) {
+                      o->corridor.enabled = true;
+                      o->inverse_depth_refit = true;
+                    },
+                    mask});
     if (mask != MaskKind::kNone) {
+      list.push_back({"beyond: margin 10 px + inverse-depth refit" + suffix,
+                      [](Options* o) {
+                        o->road_mask_margin_px = 10;
+                        o->inverse_depth_refit = true;
+                      },
+                      mask});
+      list.push_back({"beyond: margin + corridor + inverse-depth" + suffix,
+                      [](Options* o) {
+                        o->road_mask_margin_px = 10;
+                        o->corridor.enabled = true;
+                        o->inverse_depth_refit = true;
+                      },
+                      mask});
       list.push_back({"beyond: margin 10 px + corridor" + suffix,
                       [](Options* o) {
                         o->road_mask_margin_px = 10;

@@ -171,12 +171,21 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
     return finish_held(ScaleStatus::kHeldDegenerate);
   }
 
+  Plane plane = fit.plane;
+  if (options_.inverse_depth_refit) {
+    const std::optional<Plane> refit =
+        FitPlaneInverseDepth(Gather(triangulated.points, selection), fit.inliers, cur_from_prev,
+                             *road_normal, options_.inverse_depth_weighting);
+    if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
+    plane = *refit;
+  }
+
   has_model_ = true;
-  last_plane_ = fit.plane;
-  last_raw_scale_ = options_.camera_height / fit.plane.height;
+  last_plane_ = plane;
+  last_raw_scale_ = options_.camera_height / plane.height;
   estimate.status = ScaleStatus::kOk;
   estimate.has_scale = true;
-  estimate.plane = fit.plane;
+  estimate.plane = plane;
   estimate.raw_scale = last_raw_scale_;
   estimate.scale = options_.use_filter ? filter_.Add(last_raw_scale_) : last_raw_scale_;
   estimate.road_track_indices =

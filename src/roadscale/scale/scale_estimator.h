@@ -8,6 +8,7 @@
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/scale/depth_consistency_vote.h"
+#include "roadscale/scale/inverse_depth_plane.h"
 #include "roadscale/scale/road_corridor.h"
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane.h"
@@ -37,7 +38,13 @@ struct ScaleEstimatorOptions {
   int road_mask_margin_px = 0;
   // Beyond the paper: only road points in the corridor ahead of the car (road_corridor.h).
   RoadCorridorOptions corridor;
-  bool use_horizon = true;  // keep points below the horizon only
+  // Beyond the paper (false = the paper's least-squares plane): refit the plane on RANSAC's
+  // inliers in inverse depth, weighted by each point's depth precision
+  // (inverse_depth_plane.h): the total-least-squares plane on triangulated points is tilted by
+  // their errors along the viewing rays.
+  bool inverse_depth_refit = false;
+  bool inverse_depth_weighting = true;  // with inverse_depth_refit
+  bool use_horizon = true;              // keep points below the horizon only
   // Beyond the paper (0 = the paper): keep only points whose viewing ray is this far below
   // the horizon, i.e. road nearer than h0 / tan(angle) (3 deg: about 31 m at 1.65 m). Far road
   // points have little parallax: their depths are noisy and biased.

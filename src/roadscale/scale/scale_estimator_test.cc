@@ -231,6 +231,22 @@ TEST(ScaleEstimator, CorridorKeepsRoadAheadOfTheCarOnly) {
   }
 }
 
+TEST(ScaleEstimator, InverseDepthRefitKeepsTheScaleOnAStreet) {
+  const Plane road{Eigen::Vector3d(0.0, std::cos(2.0 * kDeg), std::sin(2.0 * kDeg)), 1.65};
+  ScaleEstimatorOptions options = Unfiltered();
+  options.inverse_depth_refit = true;
+  for (uint32_t seed : {1U, 2U, 3U}) {
+    const testing::TwoViewObservations pair = StreetPair(road, 40 + seed, 0.02);
+    ScaleEstimator estimator(KittiOdometryCamera(), options);
+    const ScaleEstimate estimate = estimator.Estimate(
+        pair.prev_pixels, pair.cur_pixels, testing::DriveAlongRoad(road, kStep, 0.02), cv::Mat());
+    ASSERT_EQ(estimate.status, ScaleStatus::kOk) << "seed " << seed;
+    EXPECT_LT(std::abs(estimate.raw_scale / kStep - 1.0), 0.01) << "seed " << seed;
+    EXPECT_LT(AngleBetween(estimate.plane.normal, road.normal), 1.0 * kDeg);
+    EXPECT_NEAR(estimate.plane.height * estimate.raw_scale, 1.65, 1e-9);
+  }
+}
+
 TEST(ScaleEstimator, RejectsBadInput) {
   ScaleEstimatorOptions options;
   options.camera_height = 0.0;
