@@ -1,6 +1,7 @@
 #include "roadscale/pipeline/config_yaml.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -26,11 +27,14 @@ struct Block {
   std::vector<Key> keys;
 };
 
+// The shortest of 15..17 significant digits that reads back to the same double.
 std::string FormatDouble(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
+  for (int digits = 15;; ++digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    if (digits == 17 || std::strtod(out.str().c_str(), nullptr) == value) return out.str();
+  }
 }
 
 template <typename T>
