@@ -3,8 +3,15 @@
 //
 //   build/bench/roadscale_scale_on_kitti [--frames 200] [--synthetic-pairs 200] [--csv FILE]
 //       [--sequence SEQ_DIR --poses POSES_TXT] [--h0 1.65] [--min-parallax-deg D]
+//       [--only TEXT] [--diagnose 1]
 //
 // --min-parallax-deg changes triangulation.min_parallax_deg in every configuration.
+// --only TEXT runs only the configurations whose name contains TEXT.
+// --diagnose 1 (rendered sequences with depth/, semantic/ and road_planes.txt): for each
+// "semantic" configuration, the KLT error of the road tracks against the true flow (from the
+// rendered depth and the true motion), their triangulated against their rendered depth, and
+// the fitted plane against the true plane and against the plane through the true positions
+// of the same inliers (docs/benchmarks.md, "Bias analysis").
 // --segmentation-model YAML (e.g. config/models/espnetv2_512x256.yaml, from the repository
 // root) segments each previous frame and uses the network's road mask as the "semantic" mask
 // when the sequence has no semantic/ folder.
@@ -614,7 +621,8 @@ int Main(int argc, char** argv) {
     } else {
       throw Error("unknown option " + flag +
                   " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
-                  "--poses FILE, --h0 METRES, --min-parallax-deg D or --segmentation-model YAML)");
+                  "--poses FILE, --h0 METRES, --min-parallax-deg D, --segmentation-model YAML, "
+                  "--only TEXT or --diagnose 1)");
     }
   }
   std::ofstream csv;
