@@ -1,0 +1,101 @@
+#include "roadscale/pipeline/config_yaml.h"
+
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+std::string WriteFile(const testing::TempDir& dir, const std::string& text) {
+  const std::string path = (dir.path() / "config.yaml").string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::string& path) {
+  RunConfig config;
+  try {
+    ReadRunConfig(path, &config);
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(RunConfigYaml, DefaultsAreTheModulesDefaults) {
+  const RunConfig config;
+  EXPECT_EQ(config.scale_source, "road");
+  EXPECT_EQ(config.segmentation.model, "default");
+  EXPECT_EQ(config.scale.filter.window, ScaleFilterOptions().window);
+  EXPECT_EQ(config.pipeline.frontend.tracker.detector.type, DetectorType::kSift);
+}
+
+TEST(RunConfigYaml, ReadsGivenKeysAndKeepsTheOthers) {
+  testing::TempDir dir;
+  const std::string path = WriteFile(dir,
+                                     "Camera:\n  h0: 1.5\nFrontend:\n  detector: orb\n"
+                                     "Scale:\n  filter_gaussian_sigma: 3\n  vote_edge_visit: "
+                                     "per_edge\nSegmentation:\n  every: 2\n");
+  RunConfig config;
+  ReadRunConfig(path, &config);
+  EXPECT_EQ(*config.camera.h0, 1.5);
+  EXPECT_FALSE(config.camera.HasIntrinsics());
+  EXPECT_EQ(config.pipeline.frontend.tracker.detector.type, DetectorType::kOrb);
+  EXPECT_EQ(config.scale.filter.gaussian_sigma, 3.0);
+  EXPECT_EQ(config.scale.depth_vote.edge_visit, DepthConsistencyVoteOptions::EdgeVisit::kPerEdge);
+  EXPECT_EQ(config.segmentation.every, 2);
+  EXPECT_EQ(config.scale.filter.window, 5);
+}
+
+TEST(RunConfigYaml, WrittenConfigReadsBackToTheSameFile) {
+  testing::TempDir dir;
+  RunConfig config;
+  config.camera.fx = 718.856;
+  config.camera.fy = 718.856;
+  config.camera.cx = 607.1928;
+  config.camera.cy = 185.2157;
+  config.camera.width = 1241;
+  config.camera.height = 376;
+  config.camera.h0 = 1.0 / 3.0;
+  config.scale.ransac.inlier_threshold = 0.1 + 0.2;
+  config.segmentation.model = "models/a b.yaml";
+  config.pipeline.frontend.motion.refinement.loss = SampsonRefinementOptions::Loss::kCauchy;
+  const std::string text = FormatRunConfig(config);
+  const std::string path = WriteFile(dir, text);
+  RunConfig back;
+  ReadRunConfig(path, &back);
+  EXPECT_EQ(FormatRunConfig(back), text);
+  EXPECT_EQ(*back.camera.h0, 1.0 / 3.0);
+  EXPECT_EQ(back.scale.ransac.inlier_threshold, 0.1 + 0.2);
+  EXPECT_EQ(back.segmentation.model, "models/a b.yaml");
+  EXPECT_EQ(*back.camera.width, 1241);
+}
+
+TEST(RunConfigYaml, ErrorsNameTheFileAndLine) {
+  testing::TempDir dir;
+  const std::string unknown_key = WriteFile(dir, "Scale:\n  use_filter: true\n  filtr: 1\n");
+  EXPECT_NE(ErrorOf(unknown_key).find("config.yaml:3: unknown key 'Scale.filtr'"),
+            std::string::npos)
+      << ErrorOf(unknown_key);
+  const std::string unknown_block = WriteFile(dir, "Backend:\n  x: 1\n");
+  EXPECT_NE(ErrorOf(unknown_block).find("config.yaml:1: unknown block 'Backend'"),
+            std::string::npos);
+  const std::string wrong_type = WriteFile(dir, "Frontend:\n  min_inliers: lots\n");
+  EXPECT_NE(ErrorOf(wrong_type).find("config.yaml:2: invalid value for Frontend.min_inliers"),
+            std::string::npos);
+  const std::string wrong_enum = WriteFile(dir, "Frontend:\n  detector: surf\n");
+  EXPECT_NE(ErrorOf(wrong_enum).find("config.yaml:2:"), std::string::npos);
+  const std::string partial_camera = WriteFile(dir, "Camera:\n  fx: 700\n");
+  EXPECT_NE(ErrorOf(partial_camera).find("give all of fx, fy, cx, cy, width, height"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf((dir.path() / "missing.yaml").string()).find("missing.yaml"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace roadscale

@@ -1,0 +1,75 @@
+#include "roadscale/pipeline/run_report.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace roadscale {
+namespace {
+
+std::vector<FrameRecord> Records(const std::vector<std::string>& statuses) {
+  std::vector<FrameRecord> records;
+  for (size_t i = 0; i < statuses.size(); ++i) {
+    FrameRecord record;
+    record.index = 100 + i;
+    record.status = statuses[i];
+    records.push_back(record);
+  }
+  return records;
+}
+
+TEST(RunReport, NoWarningWhenEveryStepIsScaled) {
+  EXPECT_TRUE(ScaleWarnings(Records({"first", "ok", "ok", "stationary", "ok"})).empty());
+}
+
+TEST(RunReport, WarnsAboutAWholeUnscaledSequence) {
+  const std::vector<std::string> warnings =
+      ScaleWarnings(Records({"first", "unscaled", "stationary", "unscaled"}));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("UNSCALED"), std::string::npos);
+}
+
+TEST(RunReport, NamesTheUnscaledStartAndLongHeldRuns) {
+  std::vector<std::string> statuses = {"first", "unscaled", "unscaled", "ok"};
+  for (int i = 0; i < 12; ++i) statuses.push_back("held");
+  statuses.push_back("ok");
+  statuses.push_back("held");  // a short run: no warning of its own
+  for (int i = 0; i < 10; ++i) statuses.push_back("ok");
+  const std::vector<std::string> warnings = ScaleWarnings(Records(statuses));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("frames 101-102"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[1].find("frames 104-115"), std::string::npos) << warnings[1];
+}
+
+TEST(RunReport, SeriesTakeTheScaleSourcesColumnsAndTheTrueStepLength) {
+  RunReportData data;
+  data.records = Records({"first", "ok", "ok"});
+  data.records[1].scale_diagnostics_csv = "0.5,0.75,10";
+  data.records[2].scale_diagnostics_csv = "nan,0.8,";
+  data.scale_diagnostics_header = "road_raw_scale,road_scale,road_triangulated";
+  data.gt_world_from_cam = {Rigid3d::Identity(), Rigid3d::Identity(), Rigid3d::Identity()};
+  data.gt_world_from_cam[1].translation() = Eigen::Vector3d(0, 0, 1);
+  data.gt_world_from_cam[2].translation() = Eigen::Vector3d(0, 0, 3);
+  const std::vector<FrameSeries> series = RunFrameSeries(data);
+  const auto find = [&](const std::string& name) -> const FrameSeries& {
+    for (const FrameSeries& s : series) {
+      if (s.name == name) return s;
+    }
+    ADD_FAILURE() << "no series " << name;
+    return series.front();
+  };
+  EXPECT_TRUE(std::isnan(find("scale_raw").values[0]));
+  EXPECT_EQ(find("scale_raw").values[1], 0.5);
+  EXPECT_TRUE(std::isnan(find("scale_raw").values[2]));
+  EXPECT_EQ(find("scale_filtered").values[2], 0.8);
+  EXPECT_EQ(find("points_triangulated").values[1], 10);
+  EXPECT_TRUE(std::isnan(find("points_triangulated").values[2]));
+  EXPECT_DOUBLE_EQ(find("scale_true").values[1], 1.0);
+  EXPECT_DOUBLE_EQ(find("scale_true").values[2], 2.0);
+  EXPECT_EQ(find("scale_true").kind, FrameSeriesKind::kScale);
+}
+
+}  // namespace
+}  // namespace roadscale
