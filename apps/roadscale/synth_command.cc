@@ -48,7 +48,7 @@ void RegisterSynthCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "synth",
       "Render a synthetic driving sequence with exact ground truth (poses, road planes, "
-      "semantic labels, depth) in KITTI's layout.");
+      "semantic labels, depth, moving masks) in KITTI's layout.");
   std::string presets;
   for (const std::string& name : synth::PresetNames())
     presets += (presets.empty() ? "" : "|") + name;

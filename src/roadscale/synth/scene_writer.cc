@@ -11,6 +11,7 @@
 #include "roadscale/io/camera_setup.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/synth/road_plane_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::synth {
@@ -84,8 +85,7 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
 
   TextFile times(sequence / "times.txt");
   TextFile planes(sequence / "road_planes.txt");
-  planes.stream() << "# frame nx ny nz h: true road plane in the camera frame (n . X = h for "
-                     "road points under the car, n unit and pointing down)\n";
+  planes.stream() << RoadPlaneFileHeader() << '\n';
   Trajectory trajectory;
   const bool tty = options.progress && isatty(2);
   for (int i = 0; i < scene.frames(); ++i) {
@@ -99,10 +99,8 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
     char line[160];
     std::snprintf(line, sizeof(line), "%e\n", frame.time);
     times.stream() << line;
-    const Eigen::Vector3d& n = frame.road_plane.normal;
-    std::snprintf(line, sizeof(line), "%d %.12f %.12f %.12f %.12f\n", i, n.x(), n.y(), n.z(),
-                  frame.road_plane.height);
-    planes.stream() << line;
+    planes.stream() << FormatRoadPlaneRow({i, frame.road_plane.normal, frame.road_plane.height})
+                    << '\n';
     trajectory.world_from_cam.push_back(frame.world_from_cam);
     trajectory.timestamps.push_back(frame.time);
     if (tty) {

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/synth/road_plane_file.h"
 #include "roadscale/synth/scene_writer.h"
 #include "roadscale/testing/temp_dir.h"
 #include "roadscale/util/error.h"
@@ -49,27 +49,6 @@ std::vector<RoadPiece> TwistyRoad() {
 std::string ReadFile(const fs::path& path) {
   std::ifstream file(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-}
-
-struct RoadPlaneRow {
-  int frame;
-  Eigen::Vector3d n;
-  double h;
-};
-
-std::vector<RoadPlaneRow> ReadRoadPlanes(const fs::path& path) {
-  std::ifstream file(path);
-  std::vector<RoadPlaneRow> rows;
-  std::string line;
-  while (std::getline(file, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream in(line);
-    RoadPlaneRow row;
-    in >> row.frame >> row.n.x() >> row.n.y() >> row.n.z() >> row.h;
-    EXPECT_FALSE(in.fail()) << line;
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 // Road coordinates (u, l) and height h above the analytic road surface of a scene point,
@@ -239,28 +218,28 @@ TEST(SyntheticScene, WrittenRoadPlaneGivesTheCameraHeightEveryFrame) {
   writer.out_dir = dir.path().string();
   WriteSyntheticSequence(scene, writer);
   const std::vector<RoadPlaneRow> planes =
-      ReadRoadPlanes(dir.path() / "sequences" / "00" / "road_planes.txt");
+      ReadRoadPlanes((dir.path() / "sequences" / "00" / "road_planes.txt").string());
   const Trajectory poses = ReadKittiTrajectory((dir.path() / "poses" / "00.txt").string());
   ASSERT_EQ(planes.size(), 80u);
   const double h0 = options.vehicle.h0;
   for (int i = 0; i < 80; ++i) {
     const RoadPlaneRow& plane = planes[i];
     EXPECT_EQ(plane.frame, i);
-    EXPECT_NEAR(plane.n.norm(), 1.0, 1e-9);
-    EXPECT_NEAR(plane.h, h0, 1e-9);
-    EXPECT_GT(plane.n.y(), 0.99);  // pointing down the camera's y axis
+    EXPECT_NEAR(plane.normal.norm(), 1.0, 1e-9);
+    EXPECT_NEAR(plane.height, h0, 1e-9);
+    EXPECT_GT(plane.normal.y(), 0.99);  // pointing down the camera's y axis
     // The road point under the camera, from the scene model, through the written pose.
     const Rigid3d cam_from_world = poses.world_from_cam[i].inverse();
     const double u = scene.EgoState(i).position;
     const Eigen::Vector3d under =
         cam_from_world * (scene.world_from_scene() * scene.centre_line().SurfacePoint(u, 0.0));
-    EXPECT_NEAR(plane.n.dot(under), h0, 1e-6) << "frame " << i;
+    EXPECT_NEAR(plane.normal.dot(under), h0, 1e-6) << "frame " << i;
     // The plane is the road's tangent plane: nearby road points lie near it (the road
     // twists where its bank changes).
     for (const auto& [du, l] : {std::pair{2.0, 1.0}, {-2.0, -1.0}, {3.0, -1.5}, {1.0, 1.7}}) {
       const Eigen::Vector3d q =
           cam_from_world * (scene.world_from_scene() * scene.centre_line().SurfacePoint(u + du, l));
-      EXPECT_NEAR(plane.n.dot(q), h0, 0.025) << "frame " << i;
+      EXPECT_NEAR(plane.normal.dot(q), h0, 0.025) << "frame " << i;
     }
   }
   // Frame 0 is the world.
