@@ -229,6 +229,7 @@ void RunRun(const RunArguments& arguments) {
     InterruptScope interrupt_scope;
     RunPipelineOptions run_options;
     run_options.threaded = !arguments.sequential;
+    run_options.opencv_threads = config.segmentation.dnn_threads;
     try {
       result = RunPipeline(*source, *segmenter, *scale_source, config.pipeline, arguments.out,
                            run_options, on_frame, &g_interrupted);

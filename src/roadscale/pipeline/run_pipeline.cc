@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <thread>
 
+#include <opencv2/core/utility.hpp>
+
 #include "roadscale/pipeline/bounded_queue.h"
 #include "roadscale/util/error.h"
 
@@ -119,6 +121,7 @@ PipelineRunResult RunThreaded(FrameSource& source, Segmenter& segmenter,
 
 void RunPipelineOptions::Check() const {
   CheckOption(queue_capacity >= 1, "queue_capacity", "must be >= 1");
+  CheckOption(opencv_threads >= 0, "opencv_threads", "must be >= 0 (0: leave OpenCV's)");
 }
 
 std::string FrameName(const Frame& frame) {

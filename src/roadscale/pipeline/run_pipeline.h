@@ -22,6 +22,11 @@ struct RunPipelineOptions {
   // Frames a queue between two stages holds; bounds the memory to a few images whatever the
   // sequence's length. 2 lets a stage run ahead by one frame while the next is handed over.
   size_t queue_capacity = 2;
+  // OpenCV's thread count (a process-wide setting) during the run; 0 leaves it. Changing it
+  // while another thread runs an OpenCV parallel loop crashes OpenCV, so a run with a network
+  // sets it here, before the threads start, to the network's dnn_threads: the segmenter then
+  // finds it right and leaves it alone.
+  int opencv_threads = 0;
 
   void Check() const;
 };

@@ -25,12 +25,17 @@ std::string OneLine(const std::string& message) {
 }
 
 // Sets OpenCV's thread count for one scope; OpenCV's setting is global, so it is put back.
+// Nothing is changed when the count is already right: changing it while another thread runs
+// an OpenCV parallel loop (the pipeline's frontend thread) crashes OpenCV, so the threaded
+// pipeline sets it once before its threads start.
 class ScopedNumThreads {
  public:
   explicit ScopedNumThreads(int threads) : previous_(cv::getNumThreads()) {
-    cv::setNumThreads(threads);
+    if (threads != previous_) cv::setNumThreads(threads);
   }
-  ~ScopedNumThreads() { cv::setNumThreads(previous_); }
+  ~ScopedNumThreads() {
+    if (cv::getNumThreads() != previous_) cv::setNumThreads(previous_);
+  }
   ScopedNumThreads(const ScopedNumThreads&) = delete;
   ScopedNumThreads& operator=(const ScopedNumThreads&) = delete;
 
