@@ -58,20 +58,27 @@ double Cracks(double s, double t, double footprint, double frequency, double wid
   return SmoothStep(width + blur, width - blur, distance) * std::min(1.0, width / blur);
 }
 
-// Sparse dark discs (oil drops, stains, filled holes): at most one per square cell of side
-// `cell`, inside it, with probability `density`. Returns the filtered coverage.
-double Spots(double s, double t, double footprint, double cell, double density, double r_min,
-             double r_max, uint32_t seed) {
-  const int32_t ci = static_cast<int32_t>(FastFloor(s / cell));
-  const int32_t cj = static_cast<int32_t>(FastFloor(t / cell));
+// Sparse stains (oil drops, dust, filled holes): at most one ellipse per cell of
+// (aspect * cell) x cell, inside it, with probability `density`; the ellipse is `aspect`
+// times longer along s (the road) than across. Returns the filtered coverage, and in `sign`
+// whether the stain is dark (-1) or light (+1).
+double Spots(const TexelQuery& q, double cell, double aspect, double density, double r_min,
+             double r_max, double light_share, uint32_t seed, double* sign) {
+  const double cell_s = aspect * cell;
+  const int32_t ci = static_cast<int32_t>(FastFloor(q.s / cell_s));
+  const int32_t cj = static_cast<int32_t>(FastFloor(q.t / cell));
   const uint32_t h = Hash3(ci, cj, seed);
   if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
-  const double radius = r_min + (r_max - r_min) * (Hash32(h) >> 8) / 16777216.0;
+  auto unit = [&](uint32_t k) { return (Hash32(h + k) >> 8) / 16777216.0; };
+  const double radius = r_min + (r_max - r_min) * unit(0);
   const double margin = std::min(radius, 0.5 * cell);
-  const double cs = ci * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 1) >> 8) / 16777216.0;
-  const double ct = cj * cell + margin + (cell - 2.0 * margin) * (Hash32(h + 2) >> 8) / 16777216.0;
-  const double d = std::sqrt((s - cs) * (s - cs) + (t - ct) * (t - ct));
-  const double soft = 0.5 * footprint + 0.004;
+  const double cs = ci * cell_s + aspect * margin + (cell_s - 2.0 * aspect * margin) * unit(1);
+  const double ct = cj * cell + margin + (cell - 2.0 * margin) * unit(2);
+  *sign = unit(3) < light_share ? 1.0 : -1.0;
+  // Distance in units of the across-road radius; the footprint scaled the same way.
+  const double ds = (q.s - cs) / aspect, dt = q.t - ct;
+  const double d = std::sqrt(ds * ds + dt * dt);
+  const double soft = 0.5 * std::max(q.footprint_s / aspect, q.footprint_t) + 0.004;
   return SmoothStep(radius + soft, radius - soft, d) * std::min(1.0, radius / soft);
 }
 
@@ -103,21 +110,24 @@ Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
   const double stains = FilteredFbm(q.s, q.t, fp, 0.05, 3, 0.5, seed);
   const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 3, 0.6, seed + 5);
   const double grain = FilteredFbm(q.s, q.t, fp, 3.0, 6, 0.85, seed + 11);
-  double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 0.6 * grain);
+  double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 1.2 * grain);
   // Detail that gives the road its few, strong corners: repairs, spots, cracks.
   const double detail = options.road_detail;
   if (detail > 0.0) {
     double shade = 0.0;
     const double repair = Repairs(q, 9.0, 3.5, 0.25 * detail, seed + 23, &shade);
     v *= 1.0 + contrast * 0.16 * repair * shade;
-    const double spots = Spots(q.s, q.t, fp, 1.0, 0.45 * detail, 0.03, 0.12, seed + 29);
+    // Stains drawn out along the road (drips from passing cars, wheel-borne dirt): seen
+    // from the car they look round, which is what blob detectors such as SIFT pick up.
+    double sign = 0.0;
+    const double stains_along =
+        Spots(q, 0.8, 4.0, 0.35 * detail, 0.04, 0.14, 0.3, seed + 29, &sign);
+    v *= 1.0 + contrast * (sign < 0.0 ? 0.35 : 0.25) * sign * stains_along;
+    const double spots = Spots(q, 1.0, 1.0, 0.3 * detail, 0.03, 0.1, 0.0, seed + 53, &sign);
     v *= 1.0 - contrast * 0.3 * spots;
     // Gravel specks, light and dark: the texture a camera resolves near the car.
-    const double specks = Spots(q.s, q.t, fp, 0.2, 0.35 * detail, 0.008, 0.025, seed + 43);
-    if (specks > 0.0) {
-      const double sign = ValueNoise(q.s * 5.0, q.t * 5.0, seed + 47) < 0.5 ? -1.0 : 1.0;
-      v *= 1.0 + contrast * 0.45 * sign * specks;
-    }
+    const double specks = Spots(q, 0.2, 1.0, 0.35 * detail, 0.008, 0.025, 0.5, seed + 43, &sign);
+    v *= 1.0 + contrast * 0.6 * sign * specks;
     const double crack = Cracks(q.s, q.t, fp, 0.22, 0.015, seed + 31);
     const double crack_density = SmoothStep(0.55 - 0.12 * detail, 0.75 - 0.12 * detail,
                                             ValueNoise(q.s * 0.03, q.t * 0.1, seed + 37));

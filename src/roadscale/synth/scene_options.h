@@ -119,7 +119,7 @@ struct ImageOptions {
   double noise_sigma = 1.0;         // grey levels of Gaussian image noise
   double exposure_variation = 0.0;  // relative amplitude of a slow gain change
   double exposure_period_s = 15.0;
-  double sun_elevation_deg = 40.0, sun_azimuth_deg = 35.0;
+  double sun_elevation_deg = 40.0, sun_azimuth_deg = 60.0;
   double ambient = 0.5;          // share of light that does not depend on orientation
   double haze_distance = 350.0;  // metres over which contrast falls to 1/e
   double far_distance = 260.0;   // nothing is drawn beyond this depth
