@@ -28,7 +28,7 @@ Rgb SkyColour(const Eigen::Vector3d& direction, uint32_t seed) {
     // Clouds on a plane above the camera, fading towards the horizon.
     const double scale = 1.0 / (elevation + 0.05);
     const double x = direction.x() * scale, y = direction.y() * scale;
-    const double cloud = FilteredFbm(x, y, 0.002 * scale, 0.6, 4, 0.55, seed);
+    const double cloud = FilteredFbm(x, y, 0.002 * scale, 0.6, 3, 0.55, seed);
     const double k = 0.5 * SmoothStep(-0.05, 0.25, cloud) * SmoothStep(0.02, 0.25, elevation);
     sky = Mix(sky, Rgb{0.95f, 0.95f, 0.96f}, k);
   }

@@ -107,9 +107,9 @@ Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
   const double contrast = options.road_contrast;
   // Large stains, medium blotches and a fine grain that fades with distance, as real
   // asphalt does in a camera image.
-  const double stains = FilteredFbm(q.s, q.t, fp, 0.05, 3, 0.5, seed);
-  const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 3, 0.6, seed + 5);
-  const double grain = FilteredFbm(q.s, q.t, fp, 3.0, 6, 0.85, seed + 11);
+  const double stains = FilteredFbm(q.s, q.t, fp, 0.05, 2, 0.5, seed);
+  const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 2, 0.6, seed + 5);
+  const double grain = FilteredFbm(q.s, q.t, fp, 3.0, 5, 0.85, seed + 11);
   double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 1.2 * grain);
   // Detail that gives the road its few, strong corners: repairs, spots, cracks.
   const double detail = options.road_detail;
@@ -219,8 +219,8 @@ Rgb Facade(const SurfaceStyle& style, const TexelQuery& q, const TextureContext&
   if (VariantUnit(v, 9) < 0.25) {
     colour = Brick(style, q, context);
   } else {
-    const double grime = FilteredFbm(q.s, q.t, fp, 0.3, 4, 0.55, seed);
-    const double grain = FilteredFbm(q.s, q.t, fp, 6.0, 4, 0.8, seed + 3);
+    const double grime = FilteredFbm(q.s, q.t, fp, 0.3, 3, 0.55, seed);
+    const double grain = FilteredFbm(q.s, q.t, fp, 6.0, 3, 0.8, seed + 3);
     colour = Scale(style.tint, 1.0 + contrast * (0.2 * grime + 0.12 * grain));
   }
   // A dark plinth and a cornice line per floor.
@@ -269,7 +269,7 @@ Rgb Brick(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& 
                                       static_cast<int32_t>(row), style.variant) -
                              0.5;
   const double fade = std::min(1.0, course / (fp + 1e-9) * 0.5);
-  const double grain = FilteredFbm(q.s, q.t, fp, 0.5, 5, 0.6, style.variant + 5);
+  const double grain = FilteredFbm(q.s, q.t, fp, 0.5, 3, 0.6, style.variant + 5);
   double v = 1.0 + contrast * (0.2 * brick_shade * fade + 0.2 * grain);
   Rgb colour = Scale(style.tint, v);
   return Mix(colour, Grey(0.62), contrast * 0.7 * mortar);
@@ -277,7 +277,7 @@ Rgb Brick(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& 
 
 Rgb Concrete(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
   const double fp = std::max(q.footprint_s, q.footprint_t);
-  const double stain = FilteredFbm(q.s, q.t, fp, 0.3, 6, 0.6, context.seed ^ style.variant);
+  const double stain = FilteredFbm(q.s, q.t, fp, 0.3, 4, 0.6, context.seed ^ style.variant);
   const double joints = 1.0 - FilteredPulse(q.s, 2.0, 1.98, 0.0, q.footprint_s);
   return Scale(style.tint, (1.0 + 0.3 * stain) * (1.0 - 0.35 * joints));
 }
@@ -305,7 +305,7 @@ Rgb Foliage(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
 Rgb Grass(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
   const double fp = std::max(q.footprint_s, q.footprint_t);
   const uint32_t seed = context.seed ^ 0x64a5u;
-  const double low = FilteredFbm(q.s, q.t, fp, 0.1, 4, 0.5, seed);
+  const double low = FilteredFbm(q.s, q.t, fp, 0.1, 3, 0.5, seed);
   const double blades = FilteredFbm(q.s, q.t, fp, 4.0, 4, 0.75, seed + 3);
   return Scale(style.tint, 1.0 + context.options.vegetation_contrast * (0.4 * low + 0.6 * blades));
 }
@@ -358,10 +358,8 @@ double FilteredFbm(double x, double y, double footprint, double frequency, int o
                    uint32_t seed) {
   // The norm counts every octave, filtered or not, so that the variance falls with
   // distance as it does in a properly filtered texture.
-  double norm = 0.0, amplitude = 1.0;
-  for (int o = 0; o < octaves; ++o, amplitude *= gain) norm += amplitude;
-  double sum = 0.0;
-  amplitude = 1.0;
+  const double norm = gain == 1.0 ? octaves : (1.0 - std::pow(gain, octaves)) / (1.0 - gain);
+  double sum = 0.0, amplitude = 1.0;
   for (int o = 0; o < octaves; ++o) {
     // Full weight while a cell spans four footprints, none below two.
     const double fade = Clamp01(2.0 - 4.0 * footprint * frequency);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <thread>
 
 #include "roadscale/synth/road_generator.h"
@@ -169,18 +170,24 @@ SynthFrame SyntheticScene::Render(int index, bool colour) {
   inputs.noise_seed = Hash32(noise_seed_ + static_cast<uint32_t>(index) * 0x9e3779b9U);
   inputs.sky_seed = sky_seed_;
 
-  // Bands of rows, one per thread: rasterize, then shade.
+  // Rasterize one band of rows per thread; then shade: the road fills the lower half and
+  // costs most, so threads take turns at bands of 8 rows to share it evenly.
   const int threads = std::min(image.threads, camera.height);
-  auto work = [&](int k) {
-    const int row_begin = camera.height * k / threads;
-    const int row_end = camera.height * (k + 1) / threads;
-    rasterizer.Rasterize(row_begin, row_end);
-    ShadeRows(inputs, row_begin, row_end, &frame.images);
+  auto run = [threads](const std::function<void(int)>& work) {
+    std::vector<std::thread> workers;
+    for (int k = 1; k < threads; ++k) workers.emplace_back(work, k);
+    work(0);
+    for (std::thread& worker : workers) worker.join();
   };
-  std::vector<std::thread> workers;
-  for (int k = 1; k < threads; ++k) workers.emplace_back(work, k);
-  work(0);
-  for (std::thread& worker : workers) worker.join();
+  run([&](int k) {
+    rasterizer.Rasterize(camera.height * k / threads, camera.height * (k + 1) / threads);
+  });
+  constexpr int kShadeBand = 8;
+  run([&](int k) {
+    for (int row = k * kShadeBand; row < camera.height; row += threads * kShadeBand) {
+      ShadeRows(inputs, row, std::min(camera.height, row + kShadeBand), &frame.images);
+    }
+  });
   return frame;
 }
 
