@@ -58,34 +58,39 @@ double Cracks(double s, double t, double footprint, double frequency, double wid
   return SmoothStep(width + blur, width - blur, distance) * std::min(1.0, width / blur);
 }
 
-// Sparse stains (oil drops, dust, filled holes): at most one ellipse per cell of
-// (aspect * cell) x cell, inside it, with probability `density`; the ellipse is `aspect`
-// times longer along s (the road) than across. Returns the filtered coverage, and in `sign`
-// whether the stain is dark (-1) or light (+1).
-double Spots(const TexelQuery& q, double cell, double aspect, double density, double r_min,
-             double r_max, double light_share, uint32_t seed, double* sign) {
-  const double cell_s = aspect * cell;
+// Sparse stains (oil drops, dust, filled holes, manhole covers): at most one ellipse per
+// cell of cell_s x cell_t, inside it, with probability `density`; the ellipse is `aspect`
+// times longer along s (the road) than across, with an across-road radius in
+// [r_min, r_max]. Returns the filtered coverage of the ellipse grown by `grow` (metres
+// across), and in `sign` whether the stain is dark (-1) or light (+1).
+double Spots(const TexelQuery& q, double cell_s, double cell_t, double aspect, double density,
+             double r_min, double r_max, double light_share, uint32_t seed, double* sign,
+             double grow = 0.0) {
   const int32_t ci = static_cast<int32_t>(FastFloor(q.s / cell_s));
-  const int32_t cj = static_cast<int32_t>(FastFloor(q.t / cell));
+  const int32_t cj = static_cast<int32_t>(FastFloor(q.t / cell_t));
   const uint32_t h = Hash3(ci, cj, seed);
   if (static_cast<double>(h >> 8) / 16777216.0 >= density) return 0.0;
   auto unit = [&](uint32_t k) { return (Hash32(h + k) >> 8) / 16777216.0; };
   const double radius = r_min + (r_max - r_min) * unit(0);
-  const double margin = std::min(radius, 0.5 * cell);
-  const double cs = ci * cell_s + aspect * margin + (cell_s - 2.0 * aspect * margin) * unit(1);
-  const double ct = cj * cell + margin + (cell - 2.0 * margin) * unit(2);
+  const double margin_t = std::min(radius + grow, 0.5 * cell_t);
+  const double margin_s = std::min(aspect * (radius + grow), 0.5 * cell_s);
+  const double cs = ci * cell_s + margin_s + (cell_s - 2.0 * margin_s) * unit(1);
+  const double ct = cj * cell_t + margin_t + (cell_t - 2.0 * margin_t) * unit(2);
   *sign = unit(3) < light_share ? 1.0 : -1.0;
   // Distance in units of the across-road radius; the footprint scaled the same way.
   const double ds = (q.s - cs) / aspect, dt = q.t - ct;
   const double d = std::sqrt(ds * ds + dt * dt);
+  const double r = radius + grow;
   const double soft = 0.5 * std::max(q.footprint_s / aspect, q.footprint_t) + 0.004;
-  return SmoothStep(radius + soft, radius - soft, d) * std::min(1.0, radius / soft);
+  return SmoothStep(r + soft, r - soft, d) * std::min(1.0, r / soft);
 }
 
 // Rectangular repairs (utility cuts) aligned with the road: at most one per cell of
-// cell_s x cell_t. Returns the filtered coverage and the patch's shade in [-1, 1].
+// cell_s x cell_t. Returns the filtered coverage, the patch's shade in [-1, 1] and, in
+// `edge`, the coverage of its 4 cm tar-sealed border.
 double Repairs(const TexelQuery& q, double cell_s, double cell_t, double density, uint32_t seed,
-               double* shade) {
+               double* shade, double* edge) {
+  *edge = 0.0;
   const int32_t ci = static_cast<int32_t>(FastFloor(q.s / cell_s));
   const int32_t cj = static_cast<int32_t>(FastFloor(q.t / cell_t));
   const uint32_t h = Hash3(ci, cj, seed);
@@ -96,8 +101,13 @@ double Repairs(const TexelQuery& q, double cell_s, double cell_t, double density
   const double s0 = ci * cell_s + (cell_s - length) * unit(3);
   const double t0 = cj * cell_t + (cell_t - width) * unit(4);
   *shade = 2.0 * unit(5) - 1.0;
-  return FilteredBox(q.s, s0, s0 + length, q.footprint_s) *
-         FilteredBox(q.t, t0, t0 + width, q.footprint_t);
+  const double inside = FilteredBox(q.s, s0, s0 + length, q.footprint_s) *
+                        FilteredBox(q.t, t0, t0 + width, q.footprint_t);
+  const double border = 0.04;
+  const double outer = FilteredBox(q.s, s0 - border, s0 + length + border, q.footprint_s) *
+                       FilteredBox(q.t, t0 - border, t0 + width + border, q.footprint_t);
+  *edge = outer - inside;
+  return inside;
 }
 
 Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext& context) {
@@ -111,27 +121,37 @@ Rgb Asphalt(const SurfaceStyle& style, const TexelQuery& q, const TextureContext
   const double blotch = FilteredFbm(q.s, q.t, fp, 0.5, 2, 0.6, seed + 5);
   const double grain = FilteredFbm(q.s, q.t, fp, 3.0, 5, 0.85, seed + 11);
   double v = 1.0 + contrast * (0.25 * stains + 0.12 * blotch + 1.2 * grain);
-  // Detail that gives the road its few, strong corners: repairs, spots, cracks.
+  // Detail that gives the road its few, strong corners: repairs with sealed edges, stains,
+  // manhole covers, cracks.
   const double detail = options.road_detail;
   if (detail > 0.0) {
-    double shade = 0.0;
-    const double repair = Repairs(q, 9.0, 3.5, 0.25 * detail, seed + 23, &shade);
-    v *= 1.0 + contrast * 0.16 * repair * shade;
+    double shade = 0.0, edge = 0.0;
+    const double repair = Repairs(q, 9.0, 3.5, 0.45 * detail, seed + 23, &shade, &edge);
+    v *= (1.0 + contrast * 0.2 * repair * shade) * (1.0 - contrast * 0.45 * edge);
     // Stains drawn out along the road (drips from passing cars, wheel-borne dirt): seen
     // from the car they look round, which is what blob detectors such as SIFT pick up.
     double sign = 0.0;
-    const double stains_along =
-        Spots(q, 0.8, 4.0, 0.35 * detail, 0.04, 0.14, 0.3, seed + 29, &sign);
-    v *= 1.0 + contrast * (sign < 0.0 ? 0.35 : 0.25) * sign * stains_along;
-    const double spots = Spots(q, 1.0, 1.0, 0.3 * detail, 0.03, 0.1, 0.0, seed + 53, &sign);
+    const double drips = Spots(q, 3.2, 0.8, 4.0, 0.35 * detail, 0.04, 0.14, 0.3, seed + 29, &sign);
+    v *= 1.0 + contrast * (sign < 0.0 ? 0.35 : 0.25) * sign * drips;
+    // Larger streaks for the distance, where the road is seen at a grazing angle.
+    const double streaks =
+        Spots(q, 10.0, 1.75, 8.0, 0.6 * detail, 0.1, 0.25, 0.2, seed + 59, &sign);
+    v *= 1.0 + contrast * 0.4 * sign * streaks;
+    const double spots = Spots(q, 1.0, 1.0, 1.0, 0.3 * detail, 0.03, 0.1, 0.0, seed + 53, &sign);
     v *= 1.0 - contrast * 0.3 * spots;
+    // Manhole covers: a dark lid in a light frame.
+    const double lid = Spots(q, 25.0, 3.5, 1.0, 0.25 * detail, 0.3, 0.3, 0.0, seed + 61, &sign);
+    const double frame =
+        Spots(q, 25.0, 3.5, 1.0, 0.25 * detail, 0.3, 0.3, 0.0, seed + 61, &sign, 0.05) - lid;
+    v *= (1.0 - contrast * 0.4 * lid) * (1.0 + contrast * 0.4 * frame);
     // Gravel specks, light and dark: the texture a camera resolves near the car.
-    const double specks = Spots(q, 0.2, 1.0, 0.35 * detail, 0.008, 0.025, 0.5, seed + 43, &sign);
+    const double specks =
+        Spots(q, 0.2, 0.2, 1.0, 0.35 * detail, 0.008, 0.025, 0.5, seed + 43, &sign);
     v *= 1.0 + contrast * 0.6 * sign * specks;
-    const double crack = Cracks(q.s, q.t, fp, 0.22, 0.015, seed + 31);
-    const double crack_density = SmoothStep(0.55 - 0.12 * detail, 0.75 - 0.12 * detail,
+    const double crack = Cracks(q.s, q.t, fp, 0.18, 0.02, seed + 31);
+    const double crack_density = SmoothStep(0.45 - 0.12 * detail, 0.65 - 0.12 * detail,
                                             ValueNoise(q.s * 0.03, q.t * 0.1, seed + 37));
-    v *= 1.0 - contrast * 0.45 * crack * crack_density;
+    v *= 1.0 - contrast * 0.5 * crack * crack_density;
   }
   Rgb colour = Scale(style.tint, v);
   // Lane markings: box-filtered across and along the road.

@@ -128,19 +128,19 @@ TEST(SynthFeatures, UrbanFramesHaveTrackableCornersOnTheRoad) {
       "%.3f\n",
       frames, min_fast, min_fast_road, min_sift, min_sift_road, min_tracked, min_correct,
       min_road_corners, min_road_tracks, min_road_correct);
-  // Floors about two thirds of what was measured (FAST 1557 (road, lower half 115), SIFT
-  // 1176 (46), KLT tracked 0.916, right 0.917, road corners 190, 85 checked, 0.794 right):
+  // Floors about two thirds of what was measured (FAST 1565 (road, lower half 135), SIFT
+  // 1213 (61), KLT tracked 0.918, right 0.908, road corners 212, 101 checked, 0.767 right):
   // hundreds of corners, a useful share of them on the road, tracks that follow the true
   // motion.
   EXPECT_GT(min_fast, 1000);
-  EXPECT_GT(min_fast_road, 70);
+  EXPECT_GT(min_fast_road, 90);
   EXPECT_GT(min_sift, 750);
-  EXPECT_GT(min_sift_road, 25);
+  EXPECT_GT(min_sift_road, 40);
   EXPECT_GT(min_tracked, 0.8);
   EXPECT_GT(min_correct, 0.85);
-  EXPECT_GT(min_road_corners, 120);
-  EXPECT_GT(min_road_tracks, 50);
-  EXPECT_GT(min_road_correct, 0.65);
+  EXPECT_GT(min_road_corners, 140);
+  EXPECT_GT(min_road_tracks, 65);
+  EXPECT_GT(min_road_correct, 0.6);
 }
 
 }  // namespace
