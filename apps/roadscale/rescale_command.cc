@@ -39,7 +39,7 @@ struct RescaleArguments {
   bool no_segmentation = false;
   std::optional<double> h0;
   double max_time_diff = 0.01;
-  std::string detector = "sift";
+  std::string detector = DetectorTypeName(TrajectoryRescalerOptions().tracker.detector.type);
   bool no_refine = false;
   std::string out;
 };
@@ -213,7 +213,7 @@ void RunRescale(const RescaleArguments& arguments) {
   }
   std::cout << "Poses:      " << (out / "poses_kitti.txt").string() << ", "
             << (out / "poses_tum.txt").string() << '\n'
-            << "Steps:      " << (out / "rescale.csv").string() << '\n';
+            << "Per step:   " << (out / "rescale.csv").string() << '\n';
 
   const Trajectory* ground_truth = source->ground_truth();
   if (ground_truth == nullptr) return;
@@ -284,7 +284,9 @@ void RegisterRescaleCommand(CLI::App& app) {
       ->capture_default_str();
   command
       ->add_option("--detector", arguments->detector,
-                   "Feature detector: sift (the paper's), orb, brisk, akaze or fast")
+                   "Feature detector: fast, sift (the paper's frontend's), orb, brisk or akaze "
+                   "(fast finds the faint road texture that the scale needs; see "
+                   "docs/benchmarks.md)")
       ->capture_default_str();
   command->add_flag("--no-refine", arguments->no_refine,
                     "Triangulate with the input's motion as it is, without refining it on the "

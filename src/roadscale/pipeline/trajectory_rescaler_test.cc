@@ -86,11 +86,9 @@ Trajectory Drive(const std::vector<double>& steps) {
   return trajectory;
 }
 
-TrajectoryRescalerOptions FastOptions() {
+TrajectoryRescalerOptions Options() {
   TrajectoryRescalerOptions options;
   options.scale.camera_height = kH0;
-  // FAST keeps the test quick; the scale does not depend on the detector here.
-  options.tracker.detector.type = DetectorType::kFast;
   return options;
 }
 
@@ -103,7 +101,7 @@ struct RescaleRun {
 RescaleRun Rescale(const FlatRoadRenderer& renderer, const Trajectory& gt,
                    const Trajectory& external, const std::vector<size_t>& pose_frames,
                    const std::vector<bool>& blank_frames = {}) {
-  TrajectoryRescaler rescaler(renderer.camera(), external, pose_frames, FastOptions());
+  TrajectoryRescaler rescaler(renderer.camera(), external, pose_frames, Options());
   RescaleRun run;
   for (size_t position = rescaler.first_frame(); position <= rescaler.last_frame(); ++position) {
     Frame frame;
@@ -222,7 +220,7 @@ TEST(TrajectoryRescaler, StepsBeforeTheFirstRoadPlaneTakeItsRatio) {
   const Trajectory external = DistortTrajectoryScale(gt, {});
   std::vector<bool> blank(gt.size(), false);
   blank[0] = blank[1] = blank[2] = true;
-  TrajectoryRescaler rescaler(renderer.camera(), external, AllFrames(gt.size()), FastOptions());
+  TrajectoryRescaler rescaler(renderer.camera(), external, AllFrames(gt.size()), Options());
   std::vector<size_t> finished_per_frame;
   std::vector<RescaledPose> poses;
   for (size_t position = 0; position < gt.size(); ++position) {
@@ -263,15 +261,15 @@ TEST(TrajectoryRescaler, WithoutAnyRoadTheTrajectoryStaysUnscaled) {
 TEST(TrajectoryRescaler, RejectsFramesBeyondTheLastPoseAndAnEarlyFinish) {
   const FlatRoadRenderer renderer;
   const Trajectory gt = Drive({0.0, 1.0});
-  TrajectoryRescaler rescaler(renderer.camera(), gt, {0, 1}, FastOptions());
+  TrajectoryRescaler rescaler(renderer.camera(), gt, {0, 1}, Options());
   Frame frame;
   frame.image = renderer.Render(gt.world_from_cam[0]);
   rescaler.AddFrame(frame, SegmentationResult());
   EXPECT_THROW(rescaler.Finish(), Error);
   rescaler.AddFrame(frame, SegmentationResult());
   EXPECT_THROW(rescaler.AddFrame(frame, SegmentationResult()), Error);
-  EXPECT_THROW(TrajectoryRescaler(renderer.camera(), gt, {1, 1}, FastOptions()), Error);
-  EXPECT_THROW(TrajectoryRescaler(renderer.camera(), gt, {0}, FastOptions()), Error);
+  EXPECT_THROW(TrajectoryRescaler(renderer.camera(), gt, {1, 1}, Options()), Error);
+  EXPECT_THROW(TrajectoryRescaler(renderer.camera(), gt, {0}, Options()), Error);
 }
 
 TEST(AssociatePosesWithFrames, KittiRowsAreFramesInOrder) {

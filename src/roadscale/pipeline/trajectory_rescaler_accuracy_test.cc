@@ -1,0 +1,126 @@
+// `roadscale rescale`'s claim, end to end through the library: a ground truth whose scale
+// was destroyed by a seeded, slowly drifting factor (as a monocular VO's) gets its metric
+// scale back from the road plane, on a rendered street and on the shared KITTI 00 frames
+// (keyframes only). Rendering and KLT over hundreds of frames make it slow (label `slow`).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/eval/scale_drift.h"
+#include "roadscale/eval/trajectory_errors.h"
+#include "roadscale/io/frame_source.h"
+#include "roadscale/pipeline/trajectory_rescaler.h"
+#include "roadscale/segmentation/label_image_segmenter.h"
+#include "roadscale/synth/scene_writer.h"
+#include "roadscale/synth/synthetic_scene.h"
+#include "roadscale/testing/shared_data.h"
+#include "roadscale/testing/temp_dir.h"
+
+namespace roadscale {
+namespace {
+
+struct Rescaled {
+  std::vector<Rigid3d> gt;        // the ground truth at the poses' frames
+  std::vector<Rigid3d> external;  // the destroyed input
+  std::vector<Rigid3d> metric;    // the output
+  int ok = 0;
+};
+
+// Destroys the scale of `sequence_dir`'s ground truth, keeps every `every`-th pose, and
+// rescales it; `labels_dir` (Cityscapes train ids) gives the road mask when not empty.
+Rescaled DestroyAndRescale(const std::string& sequence_dir, size_t every,
+                           const std::string& labels_dir) {
+  FrameSourceOptions source_options;
+  source_options.input = sequence_dir;
+  source_options.type = FrameSourceType::kKitti;
+  const KittiSequence source(source_options);
+  EXPECT_NE(source.ground_truth(), nullptr);
+  const Trajectory& gt = *source.ground_truth();
+  const Trajectory external = KeepEveryNthPose(DistortTrajectoryScale(gt, {}), every);
+  const std::vector<size_t> pose_frames =
+      AssociatePosesWithFrames(external, "external", source.timestamps());
+
+  std::unique_ptr<Segmenter> segmenter;
+  if (!labels_dir.empty()) {
+    SegmentationModel model;
+    model.backend = SegmentationBackend::kLabelImages;
+    model.label_images.folder = labels_dir;
+    segmenter = std::make_unique<LabelImageSegmenter>(model, MaskOptions());
+  }
+  TrajectoryRescalerOptions options;
+  options.scale.camera_height = source.camera().h0;
+  TrajectoryRescaler rescaler(source.camera().camera, external, pose_frames, options);
+  Rescaled result;
+  RunTrajectoryRescaler(source, segmenter.get(), rescaler, [&](const RescaledPose& pose) {
+    result.metric.push_back(pose.world_from_cam);
+    if (pose.status == RescaleStatus::kOk) ++result.ok;
+  });
+  for (size_t k = 0; k < pose_frames.size(); ++k) {
+    result.gt.push_back(gt.world_from_cam[pose_frames[k]]);
+    result.external.push_back(external.world_from_cam[k]);
+  }
+  return result;
+}
+
+class RescaleSyntheticTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new testing::TempDir();
+    synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), 80);
+    synth::SceneWriterOptions writer;
+    writer.out_dir = dir_->path().string();
+    synth::WriteSyntheticSequence(scene, writer);
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static std::string Sequence() { return (dir_->path() / "sequences" / "00").string(); }
+
+  static testing::TempDir* dir_;
+};
+testing::TempDir* RescaleSyntheticTest::dir_ = nullptr;
+
+TEST_F(RescaleSyntheticTest, RecoversTheScaleOfAnUrbanStreetWithItsRoadLabels) {
+  const Rescaled run = DestroyAndRescale(Sequence(), 1, Sequence() + "/semantic");
+  ASSERT_EQ(run.metric.size(), 80u);
+  const TrajectoryErrors destroyed = ComputeTrajectoryErrors(run.gt, run.external);
+  const TrajectoryErrors rescaled = ComputeTrajectoryErrors(run.gt, run.metric);
+  // The input is about 0.33 times as long as the truth.
+  EXPECT_LT(*destroyed.length_ratio, 0.4);
+  // Measured (synth at commit 5fed28a): length ratio 1.023, ATE se3 0.46 m over 65.5 m,
+  // every step scaled from its own road plane. The scenes' rendering still changes, so the
+  // tolerance leaves room beyond the measured error.
+  EXPECT_NEAR(*rescaled.length_ratio, 1.0, 0.05);
+  EXPECT_LT(rescaled.ate_se3_m, 1.0);
+  EXPECT_GE(run.ok, 70);
+}
+
+TEST_F(RescaleSyntheticTest, RecoversTheScaleWithoutSegmentation) {
+  const Rescaled run = DestroyAndRescale(Sequence(), 1, "");
+  ASSERT_EQ(run.metric.size(), 80u);
+  const TrajectoryErrors rescaled = ComputeTrajectoryErrors(run.gt, run.metric);
+  // Measured: 0.993, ATE se3 0.19 m, every step scaled.
+  EXPECT_NEAR(*rescaled.length_ratio, 1.0, 0.05);
+  EXPECT_GE(run.ok, 70);
+}
+
+TEST(RescaleKitti, RecoversTheScaleOfKeyframesOnTheSharedKitti00Frames) {
+  ROADSCALE_REQUIRE_SHARED("kitti/sequences/00/image_0/000199.png");
+  ROADSCALE_REQUIRE_SHARED("kitti/poses/00.txt");
+  const Rescaled run = DestroyAndRescale(testing::SharedPath("kitti/sequences/00").string(), 3, "");
+  ASSERT_EQ(run.metric.size(), 67u);  // frames 0, 3, ..., 198
+  const TrajectoryErrors destroyed = ComputeTrajectoryErrors(run.gt, run.external);
+  const TrajectoryErrors rescaled = ComputeTrajectoryErrors(run.gt, run.metric);
+  EXPECT_LT(*destroyed.length_ratio, 0.4);
+  // Measured: 0.965 (ATE se3 0.99 m over 144 m), 65 of 66 steps scaled; without
+  // segmentation the scale runs about 3 % short on these frames (docs/benchmarks.md).
+  EXPECT_NEAR(*rescaled.length_ratio, 1.0, 0.05);
+  EXPECT_LT(rescaled.ate_se3_m, 2.0);
+  EXPECT_GE(run.ok, 60);
+}
+
+}  // namespace
+}  // namespace roadscale
