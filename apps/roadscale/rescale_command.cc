@@ -19,6 +19,7 @@
 #include "roadscale/pipeline/trajectory_rescaler.h"
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/make_segmenter.h"
+#include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
 
 #include "commands.h"
@@ -82,18 +83,28 @@ std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
     *description = segmenter->Description();
     return segmenter;
   }
-  if (!arguments.model.empty()) {
-    SegmentationOptions options;
-    options.model = arguments.model;
-    std::unique_ptr<Segmenter> segmenter = MakeSegmenter(options);
-    *description = segmenter->Description();
-    return segmenter;
+  if (arguments.no_segmentation) {
+    *description = "none (--no-segmentation)";
+    return nullptr;
   }
-  *description = arguments.no_segmentation
-                     ? "none (--no-segmentation)"
-                     : "none (no --model or --labels given: every road-plane candidate is "
-                       "checked geometrically only)";
-  return nullptr;
+  SegmentationOptions options;
+  options.model = arguments.model;
+  if (options.model.empty()) {
+    // As `roadscale run`: the default network when its files are there, else none, said so.
+    const std::string path = (fs::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
+    try {
+      ReadSegmentationModel(path);
+      options.model = path;
+    } catch (const Error& error) {
+      std::cerr << "roadscale: segmentation off: model not found at " << path << " ("
+                << error.what() << ")\n";
+      *description = "none (the default model is missing)";
+      return nullptr;
+    }
+  }
+  std::unique_ptr<Segmenter> segmenter = MakeSegmenter(options);
+  *description = segmenter->Description();
+  return segmenter;
 }
 
 std::ofstream OpenOutput(const std::string& path) {
@@ -262,16 +273,16 @@ void RegisterRescaleCommand(CLI::App& app) {
                       "Camera YAML (Camera: fx fy cx cy width height h0); required with --images");
   CLI::Option* model = command->add_option(
       "--model", arguments->model,
-      "Segmentation model YAML (e.g. config/models/espnetv2_512x256.yaml): road mask and "
-      "moving objects of every pose's frame (default: no segmentation)");
+      "Segmentation model YAML: road mask and moving objects of every pose's frame "
+      "(default: config/models/espnetv2_512x256.yaml, the shared ESPNetv2; without its files "
+      "the run goes on without segmentation and says so)");
   CLI::Option* labels =
       command->add_option("--labels", arguments->labels,
                           "Folder of label PNGs (Cityscapes train ids) named like the frames, "
                           "e.g. a synthetic sequence's semantic/ (default: none)");
   CLI::Option* no_segmentation = command->add_flag(
       "--no-segmentation", arguments->no_segmentation,
-      "No segmentation: road points found by the geometric checks only (the default when "
-      "neither --model nor --labels is given)");
+      "No segmentation: road points found by the geometric checks only (default: off)");
   model->excludes(labels);
   model->excludes(no_segmentation);
   labels->excludes(no_segmentation);
