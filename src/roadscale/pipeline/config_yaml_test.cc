@@ -1,6 +1,8 @@
 #include "roadscale/pipeline/config_yaml.h"
 
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -74,6 +76,27 @@ TEST(RunConfigYaml, WrittenConfigReadsBackToTheSameFile) {
   EXPECT_EQ(back.scale.ransac.inlier_threshold, 0.1 + 0.2);
   EXPECT_EQ(back.segmentation.model, "models/a b.yaml");
   EXPECT_EQ(*back.camera.width, 1241);
+}
+
+// config/kitti.yaml is the documented list of keys: it must hold every key the program
+// writes, each with the program's default (the camera's intrinsics come from calib.txt).
+TEST(RunConfigYaml, KittiConfigListsEveryKeyWithItsDefault) {
+  RunConfig from_file;
+  ReadRunConfig(std::string(ROADSCALE_SOURCE_DIR) + "/config/kitti.yaml", &from_file);
+  RunConfig defaults;
+  defaults.camera.h0 = 1.65;
+  EXPECT_EQ(FormatRunConfig(from_file), FormatRunConfig(defaults));
+
+  std::ifstream file(std::string(ROADSCALE_SOURCE_DIR) + "/config/kitti.yaml");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::istringstream written(FormatRunConfig(defaults));
+  for (std::string line; std::getline(written, line);) {
+    const size_t colon = line.find(':');
+    const bool unset = line.size() >= 2 && line.compare(line.size() - 2, 2, " ~") == 0;
+    if (line.rfind("  ", 0) != 0 || colon == std::string::npos || unset) continue;
+    const std::string key = line.substr(0, colon + 1);
+    EXPECT_NE(text.find("\n" + key), std::string::npos) << "config/kitti.yaml lacks" << key;
+  }
 }
 
 TEST(RunConfigYaml, ErrorsNameTheFileAndLine) {
