@@ -1,5 +1,7 @@
 #include "roadscale/pipeline/pose_integrator.h"
 
+#include <algorithm>
+
 namespace roadscale {
 
 std::string PoseUpdateName(PoseUpdate update) {
@@ -18,6 +20,12 @@ std::string PoseUpdateName(PoseUpdate update) {
   return "unknown";
 }
 
+double ParallaxScaledLength(double reference_length, double parallax_px,
+                            double reference_parallax_px) {
+  if (!(parallax_px > 0.0) || !(reference_parallax_px > 0.0)) return reference_length;
+  return reference_length * parallax_px / reference_parallax_px;
+}
+
 PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult& scale) {
   if (motion.status == MotionStatus::kFirstFrame) {
     *this = PoseIntegrator();
@@ -31,6 +39,7 @@ PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult&
   PoseUpdate update;
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  double length = last_length_;
   switch (motion.status) {
     case MotionStatus::kOk:
       update = PoseUpdate::kMotion;
@@ -38,6 +47,7 @@ PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult&
       direction = motion.direction;
       last_rotation_ = rotation;
       last_direction_ = direction;
+      last_motion_parallax_px_ = motion.parallax_px;
       break;
     case MotionStatus::kStationary:
       update = PoseUpdate::kKept;
@@ -46,6 +56,10 @@ PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult&
       update = PoseUpdate::kRotationOnly;
       rotation = motion.rotation;
       direction = last_direction_;
+      if (!scale.valid) {
+        length = std::min(last_length_, ParallaxScaledLength(last_length_, motion.parallax_px,
+                                                             last_motion_parallax_px_));
+      }
       break;
     default:
       update = PoseUpdate::kConstantVelocity;
@@ -53,7 +67,7 @@ PoseUpdate PoseIntegrator::Apply(const TwoViewMotion& motion, const ScaleResult&
       direction = last_direction_;
       break;
   }
-  cur_from_prev_ = MakeRigid3d(rotation, direction * last_length_);
+  cur_from_prev_ = MakeRigid3d(rotation, direction * length);
   world_from_cam_ = world_from_cam_ * cur_from_prev_.inverse();
   return update;
 }

@@ -72,6 +72,31 @@ TEST(PoseIntegrator, PureRotationKeepsTheLastDirection) {
       integrator.world_from_cam().isApprox(before * MakeRigid3d(R, 0.5 * direction).inverse()));
 }
 
+TEST(PoseIntegrator, PureRotationWithoutALengthShrinksTheLastOneByTheParallax) {
+  PoseIntegrator integrator;
+  integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});
+  TwoViewMotion moving = Motion(MotionStatus::kOk, kIdentity, {0, 0, -1});
+  moving.parallax_px = 4.0;
+  integrator.Apply(moving, Length(0.8));
+  TwoViewMotion creeping = Motion(MotionStatus::kPureRotation, kIdentity, kZero);
+  creeping.parallax_px = 0.5;
+  EXPECT_EQ(integrator.Apply(creeping, ScaleResult()), PoseUpdate::kRotationOnly);
+  EXPECT_NEAR(integrator.step_length(), 0.8 * 0.5 / 4.0, 1e-12);
+  // Never longer than the last length, and the last length stays for the next frames.
+  creeping.parallax_px = 9.0;
+  integrator.Apply(creeping, ScaleResult());
+  EXPECT_NEAR(integrator.step_length(), 0.8, 1e-12);
+  integrator.Apply(Motion(MotionStatus::kTooFewTracks, kIdentity, kZero), ScaleResult());
+  EXPECT_NEAR(integrator.step_length(), 0.8, 1e-12);
+}
+
+TEST(PoseIntegrator, ParallaxScaledLength) {
+  EXPECT_DOUBLE_EQ(ParallaxScaledLength(2.0, 1.0, 4.0), 0.5);
+  EXPECT_DOUBLE_EQ(ParallaxScaledLength(2.0, 8.0, 4.0), 4.0);
+  EXPECT_DOUBLE_EQ(ParallaxScaledLength(2.0, 0.0, 4.0), 2.0);
+  EXPECT_DOUBLE_EQ(ParallaxScaledLength(2.0, 1.0, 0.0), 2.0);
+}
+
 TEST(PoseIntegrator, RepeatsTheLastStepWithoutAnEstimateAndKeepsTheLastLength) {
   PoseIntegrator integrator;
   integrator.Apply(Motion(MotionStatus::kFirstFrame, kIdentity, kZero), {});

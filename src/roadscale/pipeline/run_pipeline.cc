@@ -36,30 +36,21 @@ bool LoadAndSegment(FrameSource& source, Segmenter& segmenter, SegmentedFrame* o
 }
 
 // The stages on one thread, one frame after the other.
-PipelineRunResult RunSequentially(FrameSource& source, Segmenter& segmenter,
-                                  SequentialPipeline& pipeline,
-                                  const std::function<void(const FrameRecord&)>& on_frame,
-                                  const std::atomic<bool>* stop) {
-  PipelineRunResult result;
+// Returns whether the run was interrupted.
+bool RunSequentially(FrameSource& source, Segmenter& segmenter, SequentialPipeline& pipeline,
+                     const std::atomic<bool>* stop) {
   SegmentedFrame frame;
   while (true) {
-    if (stop != nullptr && stop->load()) {
-      result.interrupted = true;
-      break;
-    }
-    if (!LoadAndSegment(source, segmenter, &frame)) break;
-    const FrameRecord record = pipeline.Integrate(pipeline.Track(frame));
-    result.summary.Add(record);
-    if (on_frame) on_frame(record);
+    if (stop != nullptr && stop->load()) return true;
+    if (!LoadAndSegment(source, segmenter, &frame)) return false;
+    pipeline.Integrate(pipeline.Track(frame));
   }
-  return result;
 }
 
-// Stage 1 and stage 2 on their own threads, stage 3 on the calling thread.
-PipelineRunResult RunThreaded(FrameSource& source, Segmenter& segmenter,
-                              SequentialPipeline& pipeline, const RunPipelineOptions& options,
-                              const std::function<void(const FrameRecord&)>& on_frame,
-                              const std::atomic<bool>* stop) {
+// Stage 1 and stage 2 on their own threads, stage 3 on the calling thread. Returns whether
+// the run was interrupted.
+bool RunThreaded(FrameSource& source, Segmenter& segmenter, SequentialPipeline& pipeline,
+                 const RunPipelineOptions& options, const std::atomic<bool>* stop) {
   BoundedQueue<SegmentedFrame> segmented(options.queue_capacity);
   BoundedQueue<TrackedFrame> tracked(options.queue_capacity);
   std::exception_ptr segmentation_error;
@@ -95,12 +86,9 @@ PipelineRunResult RunThreaded(FrameSource& source, Segmenter& segmenter,
     tracked.Close();
   });
 
-  PipelineRunResult result;
   try {
     while (std::optional<TrackedFrame> frame = tracked.Pop()) {
-      const FrameRecord record = pipeline.Integrate(std::move(*frame));
-      result.summary.Add(record);
-      if (on_frame) on_frame(record);
+      pipeline.Integrate(std::move(*frame));
     }
   } catch (...) {
     integration_error = std::current_exception();
@@ -113,8 +101,7 @@ PipelineRunResult RunThreaded(FrameSource& source, Segmenter& segmenter,
   if (integration_error) std::rethrow_exception(integration_error);
   if (frontend_error) std::rethrow_exception(frontend_error);
   if (segmentation_error) std::rethrow_exception(segmentation_error);
-  result.interrupted = interrupted.load();
-  return result;
+  return interrupted.load();
 }
 
 }  // namespace
@@ -138,10 +125,16 @@ PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSo
                               const std::atomic<bool>* stop) {
   run_options.Check();
   SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
+  PipelineRunResult result;
+  pipeline.SetWrittenCallback([&](const FrameRecord& record) {
+    result.summary.Add(record);
+    if (on_frame) on_frame(record);
+  });
   const Clock::time_point start = Clock::now();
-  PipelineRunResult result =
-      run_options.threaded ? RunThreaded(source, segmenter, pipeline, run_options, on_frame, stop)
-                           : RunSequentially(source, segmenter, pipeline, on_frame, stop);
+  result.interrupted = run_options.threaded
+                           ? RunThreaded(source, segmenter, pipeline, run_options, stop)
+                           : RunSequentially(source, segmenter, pipeline, stop);
+  pipeline.Finish();
   result.summary.wall_s = MillisecondsSince(start) / 1000.0;
   return result;
 }

@@ -54,11 +54,11 @@ std::vector<std::string> ScaleWarnings(const std::vector<FrameRecord>& records) 
         "arbitrary scale)");
     return warnings;
   }
-  // Runs of unscaled or held frames, each reported once.
+  // Runs of unscaled, back-filled or held frames, each reported once.
   size_t begin = 0;
   while (begin < records.size()) {
     const std::string& status = records[begin].status;
-    if (status != "unscaled" && status != "held") {
+    if (status != "unscaled" && status != "held" && status != "backfilled") {
       ++begin;
       continue;
     }
@@ -67,7 +67,10 @@ std::vector<std::string> ScaleWarnings(const std::vector<FrameRecord>& records) 
     const std::string span = FrameSpan(records[begin].index, records[end].index);
     if (status == "unscaled") {
       warnings.push_back("no scale yet in " + span + ": unscaled there (unit steps)");
-    } else if (end - begin + 1 >= 10) {
+    } else if (status == "backfilled" && end - begin + 1 >= 10) {
+      warnings.push_back("no scale yet in " + span +
+                         ": back-filled there from the first scale and the parallax");
+    } else if (status == "held" && end - begin + 1 >= 10) {
       warnings.push_back("no usable road in " + span + ": the last scale was held there");
     }
     begin = end + 1;

@@ -43,6 +43,16 @@ TEST(RunReport, NamesTheUnscaledStartAndLongHeldRuns) {
   EXPECT_NE(warnings[1].find("frames 104-115"), std::string::npos) << warnings[1];
 }
 
+TEST(RunReport, NamesALongBackfilledStartOnly) {
+  std::vector<std::string> statuses = {"first"};
+  for (int i = 0; i < 10; ++i) statuses.push_back("backfilled");
+  statuses.push_back("ok");
+  std::vector<std::string> warnings = ScaleWarnings(Records(statuses));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("frames 101-110: back-filled"), std::string::npos) << warnings[0];
+  EXPECT_TRUE(ScaleWarnings(Records({"first", "backfilled", "backfilled", "ok"})).empty());
+}
+
 TEST(RunReport, SeriesTakeTheScaleSourcesColumnsAndTheTrueStepLength) {
   RunReportData data;
   data.records = Records({"first", "ok", "ok"});

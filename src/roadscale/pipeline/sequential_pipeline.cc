@@ -36,7 +36,11 @@ void WriteLine(std::ofstream& file, const std::string& path, const std::string& 
 
 }  // namespace
 
-void PipelineOptions::Check() const { frontend.Check(); }
+void PipelineOptions::Check() const {
+  frontend.Check();
+  CheckOption(max_frames_before_first_scale >= 0, "scale.max_frames_before_first_scale",
+              "must be >= 0 (0: never wait for the first scale)");
+}
 
 std::string FrameRecordCsvHeader() {
   return "index,timestamp,motion_status,pose_update,tracks,correspondences,inliers,detected,"
@@ -62,7 +66,9 @@ std::string FormatFrameRecordCsv(const FrameRecord& r) {
 
 SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& scale,
                                        const PipelineOptions& options, const std::string& out_dir)
-    : scale_(scale), frontend_(camera.camera, options.frontend) {
+    : scale_(scale),
+      frontend_(camera.camera, options.frontend),
+      max_waiting_frames_(options.max_frames_before_first_scale) {
   options.Check();
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
@@ -139,7 +145,28 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   record.scale_valid = scale.valid;
   record.scale_status = scale.status;
   record.scale_diagnostics_csv = scale.diagnostics_csv;
-  record.pose_update = integrator_.Apply(result.motion, scale);
+  ++position_;
+
+  if (result.motion.status != MotionStatus::kFirstFrame && !scale.valid &&
+      !integrator_.has_scale() && !stopped_waiting_ && max_waiting_frames_ > 0) {
+    record.status = "unscaled";
+    record.total_ms += MillisecondsSince(start);
+    waiting_.push_back({record, result.motion});
+    if (static_cast<int>(waiting_.size()) >= max_waiting_frames_) {
+      WriteWaitingFrames(0.0, 0.0);
+      stopped_waiting_ = true;
+    }
+    return record;
+  }
+  if (!waiting_.empty()) WriteWaitingFrames(scale.step_length_m, result.motion.parallax_px);
+  record.total_ms += MillisecondsSince(start);
+  ApplyAndWrite(record, result.motion, scale, false);
+  return record;
+}
+
+void SequentialPipeline::ApplyAndWrite(FrameRecord record, const TwoViewMotion& motion,
+                                       const ScaleResult& scale, bool backfilled) {
+  record.pose_update = integrator_.Apply(motion, scale);
   record.step_length_m = integrator_.step_length();
   switch (record.pose_update) {
     case PoseUpdate::kFirst:
@@ -149,24 +176,53 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
       record.status = "stationary";
       break;
     default:
-      record.status = !integrator_.has_scale() ? "unscaled" : scale.valid ? "ok" : "held";
+      record.status = backfilled                 ? "backfilled"
+                      : !integrator_.has_scale() ? "unscaled"
+                      : scale.valid              ? "ok"
+                                                 : "held";
       break;
   }
 
   WriteLine(poses_, poses_path_, FormatKittiRow(integrator_.world_from_cam()));
   WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, integrator_.world_from_cam()));
-  record.total_ms += MillisecondsSince(start);
   // The scale source's own columns, left empty in frames it did not see.
   const std::string scale_columns = scale_.DiagnosticsCsvHeader();
   std::string row = FormatFrameRecordCsv(record);
   if (!scale_columns.empty()) {
-    row += scale.diagnostics_csv.empty()
+    row += record.scale_diagnostics_csv.empty()
                ? std::string(std::count(scale_columns.begin(), scale_columns.end(), ',') + 1, ',')
-               : "," + scale.diagnostics_csv;
+               : "," + record.scale_diagnostics_csv;
   }
   WriteLine(records_, records_path_, row);
-  ++position_;
-  return record;
+  if (on_written_) on_written_(record);
+}
+
+void SequentialPipeline::WriteWaitingFrames(double first_length_m, double first_parallax_px) {
+  std::vector<WaitingFrame> waiting;
+  waiting.swap(waiting_);
+  for (const WaitingFrame& frame : waiting) {
+    ScaleResult scale;
+    if (first_length_m > 0.0) {
+      scale.valid = true;
+      scale.step_length_m =
+          ParallaxScaledLength(first_length_m, frame.motion.parallax_px, first_parallax_px);
+    }
+    ApplyAndWrite(frame.record, frame.motion, scale, first_length_m > 0.0);
+  }
+}
+
+void SequentialPipeline::Finish() { WriteWaitingFrames(0.0, 0.0); }
+
+SequentialPipeline::~SequentialPipeline() {
+  // Reached without Finish only when an error ends the run: whoever set the callback may be
+  // gone already, the rows still get written.
+  on_written_ = nullptr;
+  try {
+    Finish();
+  } catch (const std::exception&) {
+    // A write error here (disk full) cannot be reported from a destructor; the rows written
+    // so far stay valid.
+  }
 }
 
 FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms,

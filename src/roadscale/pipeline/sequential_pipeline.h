@@ -4,6 +4,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "roadscale/frontend/mono_frontend.h"
 #include "roadscale/io/frame_source.h"
@@ -15,6 +16,14 @@ namespace roadscale {
 
 struct PipelineOptions {
   FrontendOptions frontend;
+  // Frames before the first valid scale wait, up to this many, for it: they are then written
+  // with the first scale times their parallax over that frame's (ParallaxScaledLength in
+  // pose_integrator.h; status "backfilled"). A car often starts from a stop or on a road
+  // whose first frames give too few road points; unit steps would stretch the start of the
+  // trajectory (on the rendered stop-and-go drive: 14 steps of 1 m for 2.3 m of travel).
+  // Past this many frames, and when the run ends without a scale, the waiting frames are
+  // written with unit steps ("unscaled"). 0: never wait. 100 frames = 10 s at KITTI's 10 Hz.
+  int max_frames_before_first_scale = 100;
 
   // Throws Error naming the first invalid option.
   void Check() const;
@@ -39,8 +48,10 @@ struct FrameRecord {
   double step_length_m = 0.0;  // length of the applied step
   std::string scale_status;
   // The frame in one word: "first", "ok" (scaled in this frame), "stationary" (pose kept),
-  // "held" (the last valid scale reused: no motion to scale, too few road points, ...), or
-  // "unscaled" (no valid scale yet: the step has unit length, an arbitrary scale).
+  // "held" (the last valid scale reused: no motion to scale, too few road points, ...),
+  // "backfilled" (before the first valid scale: that scale, scaled by the parallax; see
+  // PipelineOptions), or "unscaled" (no valid scale at all: the step has unit length, an
+  // arbitrary scale).
   std::string status;
   // The scale source's own columns for this frame (ScaleResult::diagnostics_csv).
   std::string scale_diagnostics_csv;
@@ -95,8 +106,21 @@ class SequentialPipeline {
   TrackedFrame Track(const SegmentedFrame& frame);
 
   // The scale and pose stage: appends the frame's pose rows and record, flushed, so that a
-  // run stopped at frame k leaves the rows of frames before k intact.
+  // run stopped at frame k leaves the rows of frames before k intact. Frames before the first
+  // valid scale wait (PipelineOptions::max_frames_before_first_scale) and are written with
+  // the first scaled frame or by Finish; their returned record says "unscaled".
   FrameRecord Integrate(TrackedFrame tracked);
+
+  // Called with each frame's record once its rows are written, in frame order (a frame that
+  // waits for the first scale later than the call of Integrate that took it).
+  void SetWrittenCallback(std::function<void(const FrameRecord&)> on_written) {
+    on_written_ = std::move(on_written);
+  }
+
+  // Writes the frames still waiting for a first scale, with unit steps. Call it after the
+  // last frame (also after a stop or an error; the destructor calls it when it was not).
+  void Finish();
+  ~SequentialPipeline();
 
   // Track then Integrate. `load_ms`: how long decoding the frame took, for the record.
   FrameRecord ProcessFrame(const Frame& frame, double load_ms = 0.0,
@@ -108,9 +132,26 @@ class SequentialPipeline {
   const std::string& records_path() const { return records_path_; }
 
  private:
+  // A frame's pose from the integrator, and its rows written. `backfilled`: the length is
+  // the back-filled one of a frame that waited for the first scale.
+  void ApplyAndWrite(FrameRecord record, const TwoViewMotion& motion, const ScaleResult& scale,
+                     bool backfilled);
+  // Writes the waiting frames: back-filled from the first scaled step's length and parallax,
+  // or without a scale (unit steps) when `first_length_m` is 0.
+  void WriteWaitingFrames(double first_length_m, double first_parallax_px);
+
+  struct WaitingFrame {
+    FrameRecord record;
+    TwoViewMotion motion;
+  };
+
   ScaleSource& scale_;
   MonoFrontend frontend_;
   PoseIntegrator integrator_;
+  int max_waiting_frames_ = 0;
+  std::vector<WaitingFrame> waiting_;
+  std::function<void(const FrameRecord&)> on_written_;
+  bool stopped_waiting_ = false;
   size_t position_ = 0;
   cv::Mat prev_road_mask_;
   std::string poses_path_;
