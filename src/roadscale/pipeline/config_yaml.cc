@@ -162,6 +162,7 @@ std::vector<Block> Blocks(RunConfig& c) {
       {"Segmentation",
        {Scalar("model", &g.model), Scalar("labels", &c.labels), Scalar("every", &g.every),
         Scalar("dnn_threads", &g.dnn_threads),
+        Scalar("use_dynamic_mask", &g.masks.use_dynamic_mask),
         Scalar("dynamic_dilation_px", &g.masks.dynamic_dilation_px),
         Scalar("road_erosion_px", &g.masks.road_erosion_px)}},
   };

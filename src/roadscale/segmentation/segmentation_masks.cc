@@ -48,8 +48,9 @@ SegmentationResult DeriveMasks(const cv::Mat& labels, const MaskClasses& classes
                                const MaskOptions& options) {
   SegmentationResult result;
   result.labels = labels;
-  result.dynamic_mask = LabelsInSet(labels, classes.dynamic_ids);
-  if (options.dynamic_dilation_px > 0) {
+  result.dynamic_mask = options.use_dynamic_mask ? LabelsInSet(labels, classes.dynamic_ids)
+                                                 : cv::Mat::zeros(labels.size(), CV_8UC1);
+  if (options.use_dynamic_mask && options.dynamic_dilation_px > 0) {
     cv::dilate(result.dynamic_mask, result.dynamic_mask, Disc(options.dynamic_dilation_px));
   }
   cv::bitwise_not(result.dynamic_mask, result.static_mask);

@@ -22,6 +22,9 @@ struct MaskOptions {
   // does not give one; 5 px keeps SIFT's support regions (about 4 sigma) on a moving car's
   // edge out of the static mask at KITTI resolution. 0 disables.
   int dynamic_dilation_px = 5;
+  // False: no pixel is dynamic (features anywhere, no track dropped for landing on a moving
+  // object): the ablation of the paper's dynamic-object mask, with the road mask kept.
+  bool use_dynamic_mask = true;
   // Radius in pixels by which the road mask shrinks, so that points on kerbs are not taken.
   // 0 (the paper: the road mask is used as the network gives it).
   int road_erosion_px = 0;

@@ -60,6 +60,18 @@ TEST(SegmentationMasks, DynamicMaskGrowsByTheMargin) {
   EXPECT_EQ(cv::countNonZero(result.static_mask | result.dynamic_mask), 60 * 40);
 }
 
+TEST(SegmentationMasks, WithoutTheDynamicMaskNothingIsDynamicAndTheRoadStays) {
+  cv::Mat labels(20, 30, CV_8UC1, cv::Scalar(0));
+  labels(cv::Rect(10, 5, 8, 6)).setTo(13);  // a car
+  MaskOptions options;
+  options.use_dynamic_mask = false;
+  const SegmentationResult result = DeriveMasks(labels, MaskClasses(), options);
+  ASSERT_EQ(result.dynamic_mask.size(), labels.size());
+  EXPECT_EQ(cv::countNonZero(result.dynamic_mask), 0);
+  EXPECT_EQ(cv::countNonZero(result.static_mask), 20 * 30);
+  EXPECT_EQ(cv::countNonZero(result.road_mask), 20 * 30 - 8 * 6);
+}
+
 TEST(SegmentationMasks, RoadErosionShrinksFromOtherClassesButNotFromTheImageBorder) {
   MaskOptions options;
   options.road_erosion_px = 2;
