@@ -99,6 +99,14 @@ TEST(RunConfigYaml, KittiConfigListsEveryKeyWithItsDefault) {
   }
 }
 
+TEST(RunConfigYaml, RealtimeConfigSegmentsEveryOtherFrameOnly) {
+  RunConfig config;
+  ReadRunConfig(std::string(ROADSCALE_SOURCE_DIR) + "/config/kitti_realtime.yaml", &config);
+  EXPECT_EQ(config.segmentation.every, 2);
+  config.segmentation.every = 1;
+  EXPECT_EQ(FormatRunConfig(config), FormatRunConfig(RunConfig()));
+}
+
 TEST(RunConfigYaml, ErrorsNameTheFileAndLine) {
   testing::TempDir dir;
   const std::string unknown_key = WriteFile(dir, "Scale:\n  use_filter: true\n  filtr: 1\n");
