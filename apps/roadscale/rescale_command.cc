@@ -16,6 +16,7 @@
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/pipeline/trajectory_rescaler.h"
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/make_segmenter.h"
@@ -42,6 +43,7 @@ struct RescaleArguments {
   double max_time_diff = 0.01;
   std::string detector = DetectorTypeName(TrajectoryRescalerOptions().tracker.detector.type);
   bool no_refine = false;
+  std::string config;
   std::string out;
 };
 
@@ -136,6 +138,11 @@ std::string SummaryLine(const std::string& name, const TrajectoryEvaluation& eva
 
 void RunRescale(const RescaleArguments& arguments) {
   TrajectoryRescalerOptions options;
+  if (!arguments.config.empty()) {
+    RunConfig config;
+    ReadRunConfig(arguments.config, &config);
+    options.scale = config.scale;
+  }
   options.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.refine_motion = !arguments.no_refine;
   const TrajectoryFormat format = ResolveFormat(arguments);
@@ -302,6 +309,10 @@ void RegisterRescaleCommand(CLI::App& app) {
   command->add_flag("--no-refine", arguments->no_refine,
                     "Triangulate with the input's motion as it is, without refining it on the "
                     "tracks (default: refined; the output keeps the input's motion either way)");
+  command->add_option("--config", arguments->config,
+                      "Run config YAML whose Scale: block sets the road-plane scale's options "
+                      "(config/kitti.yaml lists them; the other blocks are not used here; "
+                      "default: the defaults of config/kitti.yaml)");
   command->add_option("--out", arguments->out, "Output folder (created when missing)")->required();
   command->callback([arguments, kitti, images] {
     if (kitti->count() == 0 && images->count() == 0) {

@@ -89,6 +89,13 @@ Trajectory Drive(const std::vector<double>& steps) {
 TrajectoryRescalerOptions Options() {
   TrajectoryRescalerOptions options;
   options.scale.camera_height = kH0;
+  // The input's motion as it is: this scene is road and nothing else, and refined on road
+  // tracks alone the direction tilts by up to about 0.5 deg (a small pitch rotation and a
+  // vertical turn of the direction look alike there), which the scale's default plane refit,
+  // its normal perpendicular to the travel, turns into steps 8-14 % too long. Real scenes
+  // give the refinement far points as well: the accuracy test (KITTI 00, a rendered street)
+  // runs it.
+  options.refine_motion = false;
   return options;
 }
 
@@ -148,10 +155,10 @@ TEST(TrajectoryRescaler, RecoversTheMetricStepsOfADriftingTrajectory) {
     EXPECT_EQ(pose.prev_frame, k - 1);
     EXPECT_EQ(pose.status, RescaleStatus::kOk) << k << ' ' << pose.detail;
     EXPECT_GT(pose.num_pairs, 50) << k;
-    // Measured: each step's own length within 6 % of the truth (a few dozen road points
-    // on a noisy synthetic texture), the filtered one within 4 %, the path within 1 %.
-    EXPECT_NEAR(pose.raw_ratio * pose.external_length, speeds[k], 0.08 * speeds[k]) << k;
-    EXPECT_NEAR(pose.metric_length, speeds[k], 0.06 * speeds[k]) << k;
+    // Measured: each step's own length within 3.9 % of the truth (a few dozen road points
+    // on a noisy synthetic texture), the filtered one within 2.1 %, the path within 0.2 %.
+    EXPECT_NEAR(pose.raw_ratio * pose.external_length, speeds[k], 0.06 * speeds[k]) << k;
+    EXPECT_NEAR(pose.metric_length, speeds[k], 0.04 * speeds[k]) << k;
     // The output keeps the VO's rotation and direction.
     const Rigid3d step = run.poses[k - 1].world_from_cam.inverse() * pose.world_from_cam;
     const Rigid3d gt_step = gt.world_from_cam[k - 1].inverse() * gt.world_from_cam[k];
@@ -160,7 +167,7 @@ TEST(TrajectoryRescaler, RecoversTheMetricStepsOfADriftingTrajectory) {
     gt_length += speeds[k];
     length += pose.metric_length;
   }
-  EXPECT_NEAR(length / gt_length, 1.0, 0.02);
+  EXPECT_NEAR(length / gt_length, 1.0, 0.01);
 }
 
 TEST(TrajectoryRescaler, KeyframesAreTrackedThroughTheFramesBetweenThem) {
@@ -177,13 +184,13 @@ TEST(TrajectoryRescaler, KeyframesAreTrackedThroughTheFramesBetweenThem) {
     EXPECT_EQ(run.poses[k].prev_frame, pose_frames[k - 1]);
     EXPECT_EQ(run.poses[k].status, RescaleStatus::kOk) << k;
     EXPECT_GT(run.poses[k].num_pairs, 50) << k;
-    // Measured: within 4.5 % of the true 2.4 m, the path within 2.5 %.
+    // Measured: within 1.2 % of the true 2.4 m, the path within 0.2 %.
     const double true_length = StepLength(gt, pose_frames[k - 1], pose_frames[k]);
-    EXPECT_NEAR(run.poses[k].metric_length, true_length, 0.07 * true_length) << k;
+    EXPECT_NEAR(run.poses[k].metric_length, true_length, 0.03 * true_length) << k;
     gt_length += true_length;
     length += run.poses[k].metric_length;
   }
-  EXPECT_NEAR(length / gt_length, 1.0, 0.04);
+  EXPECT_NEAR(length / gt_length, 1.0, 0.01);
 }
 
 TEST(TrajectoryRescaler, StationaryStepsStayZeroAndRoadlessStepsHoldTheLastRatio) {

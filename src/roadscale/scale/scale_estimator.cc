@@ -38,6 +38,7 @@ void ScaleEstimatorOptions::Check() const {
   CheckOption(road_mask_margin_px >= 0 && road_mask_margin_px <= 100, "scale.road_mask_margin_px",
               "must be in [0, 100] pixels");
   corridor.Check();
+  homography.Check();
   triangulation.Check();
   depth_vote.Check();
   road_model.Check();
@@ -178,6 +179,14 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
                              *road_normal, options_.inverse_depth_weighting);
     if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
     plane = *refit;
+  }
+  if (options_.homography_refit) {
+    const std::vector<int> inlier_tracks = Compose(selection, fit.inliers);
+    const std::optional<RoadHomographyRefit> refit =
+        RefitRoadHomography(pixels, Gather(cur_pixels, triangulated.track_indices), inlier_tracks,
+                            cur_from_prev, camera_, plane, options_.homography);
+    if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
+    plane = refit->plane;
   }
 
   has_model_ = true;
