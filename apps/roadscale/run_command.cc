@@ -164,6 +164,17 @@ void RunRun(const RunArguments& arguments) {
   config.camera.h0 = camera.h0;
 
   const std::unique_ptr<Segmenter> segmenter = MakeRunSegmenter(&config);
+  // More copies for the other segmentation threads: a network's inference is the slowest
+  // stage. Masks reused over frames (`every` > 1) need the frames in turn on one copy.
+  std::vector<std::unique_ptr<Segmenter>> more_segmenters;
+  std::vector<Segmenter*> segmenters = {segmenter.get()};
+  const bool network = config.labels.empty() && config.segmentation.model != "none";
+  if (network && config.segmentation.every == 1) {
+    for (int worker = 1; worker < config.segmentation.workers; ++worker) {
+      more_segmenters.push_back(MakeRunSegmenter(&config));
+      segmenters.push_back(more_segmenters.back().get());
+    }
+  }
   if (const auto* files = dynamic_cast<const ImageFileSequence*>(source.get())) {
     std::vector<std::string> names;
     for (const std::string& path : files->image_paths()) {
@@ -231,7 +242,7 @@ void RunRun(const RunArguments& arguments) {
     run_options.threaded = !arguments.sequential;
     run_options.opencv_threads = config.segmentation.dnn_threads;
     try {
-      result = RunPipeline(*source, *segmenter, *scale_source, config.pipeline, arguments.out,
+      result = RunPipeline(*source, segmenters, *scale_source, config.pipeline, arguments.out,
                            run_options, on_frame, &g_interrupted);
     } catch (const Error&) {
       if (progress) std::fprintf(stderr, "\n");

@@ -166,7 +166,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("max_frames_before_first_scale", &c.pipeline.max_frames_before_first_scale)}},
       {"Segmentation",
        {Scalar("model", &g.model), Scalar("labels", &c.labels), Scalar("every", &g.every),
-        Scalar("dnn_threads", &g.dnn_threads),
+        Scalar("dnn_threads", &g.dnn_threads), Scalar("workers", &g.workers),
         Scalar("use_dynamic_mask", &g.masks.use_dynamic_mask),
         Scalar("dynamic_dilation_px", &g.masks.dynamic_dilation_px),
         Scalar("road_erosion_px", &g.masks.road_erosion_px)}},

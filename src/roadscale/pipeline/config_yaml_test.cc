@@ -99,11 +99,13 @@ TEST(RunConfigYaml, KittiConfigListsEveryKeyWithItsDefault) {
   }
 }
 
-TEST(RunConfigYaml, RealtimeConfigSegmentsEveryOtherFrameOnly) {
+TEST(RunConfigYaml, RealtimeConfigSegmentsEveryOtherFrameOnTwoThreads) {
   RunConfig config;
   ReadRunConfig(std::string(ROADSCALE_SOURCE_DIR) + "/config/kitti_realtime.yaml", &config);
   EXPECT_EQ(config.segmentation.every, 2);
+  EXPECT_EQ(config.segmentation.dnn_threads, 2);
   config.segmentation.every = 1;
+  config.segmentation.dnn_threads = 1;
   EXPECT_EQ(FormatRunConfig(config), FormatRunConfig(RunConfig()));
 }
 

@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <thread>
+#include <vector>
 
 #include <opencv2/core/utility.hpp>
 
@@ -47,10 +50,11 @@ bool RunSequentially(FrameSource& source, Segmenter& segmenter, SequentialPipeli
   }
 }
 
-// Stage 1 and stage 2 on their own threads, stage 3 on the calling thread. Returns whether
-// the run was interrupted.
-bool RunThreaded(FrameSource& source, Segmenter& segmenter, SequentialPipeline& pipeline,
-                 const RunPipelineOptions& options, const std::atomic<bool>* stop) {
+// Stage 1 on one thread per segmenter, stage 2 on its own thread, stage 3 on the calling
+// thread. Returns whether the run was interrupted.
+bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
+                 SequentialPipeline& pipeline, const RunPipelineOptions& options,
+                 const std::atomic<bool>* stop) {
   BoundedQueue<SegmentedFrame> segmented(options.queue_capacity);
   BoundedQueue<TrackedFrame> tracked(options.queue_capacity);
   std::exception_ptr segmentation_error;
@@ -58,7 +62,21 @@ bool RunThreaded(FrameSource& source, Segmenter& segmenter, SequentialPipeline& 
   std::exception_ptr integration_error;
   std::atomic<bool> interrupted{false};
 
-  std::thread segmentation_thread([&] {
+  // Stage 1: each worker takes the next frame from the source (in turn), segments it with
+  // its own segmenter, and the frames go on in their order: at most one frame per worker
+  // waits for an earlier one.
+  std::mutex source_mutex;
+  bool no_more_frames = false;  // the source is done, or a worker failed or was cancelled
+  size_t frames_taken = 0;
+  std::mutex order_mutex;
+  std::map<size_t, SegmentedFrame> finished;
+  size_t next_to_hand_on = 0;
+  std::atomic<size_t> workers_running{segmenters.size()};
+  const auto stop_taking_frames = [&] {
+    const std::lock_guard<std::mutex> lock(source_mutex);
+    no_more_frames = true;
+  };
+  const auto segmentation_worker = [&](Segmenter& segmenter) {
     try {
       while (true) {
         if (stop != nullptr && stop->load()) {
@@ -66,14 +84,43 @@ bool RunThreaded(FrameSource& source, Segmenter& segmenter, SequentialPipeline& 
           break;
         }
         SegmentedFrame frame;
-        if (!LoadAndSegment(source, segmenter, &frame)) break;
-        if (!segmented.Push(std::move(frame))) break;
+        size_t sequence = 0;
+        {
+          const std::lock_guard<std::mutex> lock(source_mutex);
+          if (no_more_frames) break;
+          const Clock::time_point start = Clock::now();
+          if (!source.Next(&frame.frame)) {
+            no_more_frames = true;
+            break;
+          }
+          frame.load_ms = MillisecondsSince(start);
+          sequence = frames_taken++;
+        }
+        frame.segmentation = segmenter.Segment(frame.frame.image, FrameName(frame.frame));
+        const std::lock_guard<std::mutex> lock(order_mutex);
+        finished.emplace(sequence, std::move(frame));
+        for (auto next = finished.find(next_to_hand_on); next != finished.end();
+             next = finished.find(next_to_hand_on)) {
+          const bool handed_on = segmented.Push(std::move(next->second));
+          finished.erase(next);
+          ++next_to_hand_on;
+          if (!handed_on) {
+            stop_taking_frames();
+            break;
+          }
+        }
       }
     } catch (...) {
-      segmentation_error = std::current_exception();
+      stop_taking_frames();
+      const std::lock_guard<std::mutex> lock(order_mutex);
+      if (!segmentation_error) segmentation_error = std::current_exception();
     }
-    segmented.Close();
-  });
+    if (--workers_running == 0) segmented.Close();
+  };
+  std::vector<std::thread> segmentation_threads;
+  for (Segmenter* segmenter : segmenters) {
+    segmentation_threads.emplace_back(segmentation_worker, std::ref(*segmenter));
+  }
   std::thread frontend_thread([&] {
     try {
       while (std::optional<SegmentedFrame> frame = segmented.Pop()) {
@@ -96,7 +143,7 @@ bool RunThreaded(FrameSource& source, Segmenter& segmenter, SequentialPipeline& 
     segmented.Cancel();
   }
   frontend_thread.join();
-  segmentation_thread.join();
+  for (std::thread& thread : segmentation_threads) thread.join();
   // The latest stage's error first: it stopped the run at the earliest frame.
   if (integration_error) std::rethrow_exception(integration_error);
   if (frontend_error) std::rethrow_exception(frontend_error);
@@ -123,7 +170,17 @@ PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSo
                               const RunPipelineOptions& run_options,
                               const std::function<void(const FrameRecord&)>& on_frame,
                               const std::atomic<bool>* stop) {
+  return RunPipeline(source, std::vector<Segmenter*>{&segmenter}, scale, options, out_dir,
+                     run_options, on_frame, stop);
+}
+
+PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>& segmenters,
+                              ScaleSource& scale, const PipelineOptions& options,
+                              const std::string& out_dir, const RunPipelineOptions& run_options,
+                              const std::function<void(const FrameRecord&)>& on_frame,
+                              const std::atomic<bool>* stop) {
   run_options.Check();
+  CheckOption(!segmenters.empty(), "segmenters", "at least one segmenter is needed");
   SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
   PipelineRunResult result;
   pipeline.SetWrittenCallback([&](const FrameRecord& record) {
@@ -132,8 +189,8 @@ PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSo
   });
   const Clock::time_point start = Clock::now();
   result.interrupted = run_options.threaded
-                           ? RunThreaded(source, segmenter, pipeline, run_options, stop)
-                           : RunSequentially(source, segmenter, pipeline, stop);
+                           ? RunThreaded(source, segmenters, pipeline, run_options, stop)
+                           : RunSequentially(source, *segmenters.front(), pipeline, stop);
   pipeline.Finish();
   result.summary.wall_s = MillisecondsSince(start) / 1000.0;
   return result;

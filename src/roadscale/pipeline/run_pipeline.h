@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "roadscale/io/frame_source.h"
 #include "roadscale/pipeline/scale_source.h"
@@ -14,10 +15,10 @@ namespace roadscale {
 
 struct RunPipelineOptions {
   // Run the three stages (1: image loading + segmentation, 2: frontend, 3: scale + pose +
-  // writing) on their own threads, connected by bounded queues, so that their costs overlap
-  // (the paper runs the scale "as a separate thread alongside motion estimation"). Each stage
-  // sees the frames in order and owns its state, so the output does not depend on thread
-  // timing: the same input gives byte-identical poses with or without threads.
+  // writing) on their own threads (stage 1 on one per segmenter), connected by bounded queues, so
+  // that their costs overlap (the paper runs the scale "as a separate thread alongside motion
+  // estimation"). Each stage sees the frames in order and owns its state, so the output does not
+  // depend on thread timing: the same input gives byte-identical poses with or without threads.
   bool threaded = true;
   // Frames a queue between two stages holds; bounds the memory to a few images whatever the
   // sequence's length. 2 lets a stage run ahead by one frame while the next is handed over.
@@ -51,6 +52,16 @@ std::string FrameName(const Frame& frame);
 // the error is thrown.
 PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
                               const PipelineOptions& options, const std::string& out_dir,
+                              const RunPipelineOptions& run_options = {},
+                              const std::function<void(const FrameRecord&)>& on_frame = {},
+                              const std::atomic<bool>* stop = nullptr);
+
+// The same with stage 1 on one thread per segmenter (interchangeable copies: each frame is
+// segmented by one of them, whichever is free), the frames handed on in order; without
+// threads the first segmenter does every frame.
+PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>& segmenters,
+                              ScaleSource& scale, const PipelineOptions& options,
+                              const std::string& out_dir,
                               const RunPipelineOptions& run_options = {},
                               const std::function<void(const FrameRecord&)>& on_frame = {},
                               const std::atomic<bool>* stop = nullptr);

@@ -1,10 +1,14 @@
 // The sequential pipeline with the oracle scale on a short rendered street scene, compared
 // frame by frame with the scene's exact poses. Rendering makes it slow (label `slow`).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -12,10 +16,14 @@
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/oracle_scale_source.h"
+#include "roadscale/pipeline/road_scale_source.h"
+#include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/sequential_pipeline.h"
+#include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/synth/scene_writer.h"
 #include "roadscale/synth/synthetic_scene.h"
 #include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
@@ -165,6 +173,74 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
     }
     EXPECT_EQ(status[kFirstScaled], "ok");
   }
+}
+
+// The rendered labels, slowed down by a few milliseconds that depend on the frame, so that
+// the segmentation threads finish their frames out of order; throws on `failing_frame`.
+class UnevenSegmenter : public Segmenter {
+ public:
+  UnevenSegmenter(const std::string& labels, int failing_frame) : failing_frame_(failing_frame) {
+    SegmentationModel model;
+    model.yaml_path = labels;
+    model.backend = SegmentationBackend::kLabelImages;
+    model.label_images.folder = labels;
+    model.label_images.ids = LabelIdSpace::kTrainIds;
+    labels_ = std::make_unique<LabelImageSegmenter>(model, MaskOptions());
+  }
+  SegmentationResult Segment(const cv::Mat& image, const std::string& frame_name) override {
+    const int frame = std::stoi(frame_name);
+    if (frame == failing_frame_) throw Error("frame " + frame_name + ": made to fail");
+    std::this_thread::sleep_for(std::chrono::milliseconds(frame % 3 == 0 ? 30 : 1));
+    return labels_->Segment(image, frame_name);
+  }
+  std::string Description() const override { return "uneven labels"; }
+
+ private:
+  std::unique_ptr<LabelImageSegmenter> labels_;
+  int failing_frame_;
+};
+
+std::string FileText(const std::string& path) {
+  std::ifstream file(path);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) {
+  constexpr int kFrames = 14;
+  testing::TempDir dir;
+  synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), kFrames);
+  synth::SceneWriterOptions writer;
+  writer.out_dir = dir.path().string();
+  synth::WriteSyntheticSequence(scene, writer);
+  FrameSourceOptions source_options;
+  source_options.input = (dir.path() / "sequences" / "00").string();
+  source_options.type = FrameSourceType::kKitti;
+  const std::string labels = source_options.input + "/semantic";
+
+  const auto run = [&](int threads, int failing_frame, const std::string& out) {
+    const auto source = OpenFrameSource(source_options);
+    std::vector<std::unique_ptr<UnevenSegmenter>> owned;
+    std::vector<Segmenter*> segmenters;
+    for (int i = 0; i < threads; ++i) {
+      owned.push_back(std::make_unique<UnevenSegmenter>(labels, failing_frame));
+      segmenters.push_back(owned.back().get());
+    }
+    RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
+    return RunPipeline(*source, segmenters, road, {}, out);
+  };
+  run(1, -1, dir.File("one"));
+  run(3, -1, dir.File("three"));
+  const std::string one = FileText(dir.File("one") + "/poses_kitti.txt");
+  ASSERT_EQ(std::count(one.begin(), one.end(), '\n'), kFrames);
+  EXPECT_EQ(FileText(dir.File("three") + "/poses_kitti.txt"), one);
+  EXPECT_EQ(FileText(dir.File("three") + "/poses_tum.txt"),
+            FileText(dir.File("one") + "/poses_tum.txt"));
+
+  // A failing frame stops the run after the frames before it, whichever thread had them.
+  EXPECT_THROW(run(3, 9, dir.File("failed")), Error);
+  const std::string failed = FileText(dir.File("failed") + "/poses_kitti.txt");
+  ASSERT_EQ(std::count(failed.begin(), failed.end(), '\n'), 9);
+  EXPECT_EQ(failed, one.substr(0, failed.size()));
 }
 
 }  // namespace

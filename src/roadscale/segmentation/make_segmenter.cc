@@ -33,6 +33,7 @@ void SegmentationOptions::Check() const {
   CheckOption(!model.empty(), "model", "a segmentation model YAML or 'none' is needed");
   CheckOption(every >= 1, "every", "segment every k-th frame needs k >= 1");
   CheckOption(dnn_threads >= 1, "dnn_threads", "must be >= 1");
+  CheckOption(workers >= 1 && workers <= 16, "segmentation.workers", "must be in [1, 16]");
   masks.Check();
 }
 

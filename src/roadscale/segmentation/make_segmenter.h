@@ -18,8 +18,14 @@ struct SegmentationOptions {
   std::string model = "none";
   // Segment every k-th frame and reuse the masks in between; 1 (the paper: every frame).
   int every = 1;
-  // Threads OpenCV DNN uses for a network; 2.
-  int dnn_threads = 2;
+  // Threads OpenCV DNN uses for a network; 1.
+  int dnn_threads = 1;
+  // Frames segmented at the same time, each by its own copy of the segmenter (`roadscale run`
+  // in threads; 1 when `every` > 1, whose reuse of masks needs the frames in turn). OpenCV DNN
+  // spreads one ESPNetv2 512x256 inference over 2 threads at 1.47x the speed of 1 (92 ms
+  // instead of 135 ms): two single-threaded networks on two frames keep both cores busier
+  // (docs/benchmarks.md, "System").
+  int workers = 2;
   MaskOptions masks;
 
   void Check() const;
