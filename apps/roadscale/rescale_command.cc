@@ -90,6 +90,7 @@ std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
     return nullptr;
   }
   SegmentationOptions options;
+  options.dnn_threads = 2;  // one network, the frames in turn: both cores for its inference
   options.model = arguments.model;
   if (options.model.empty()) {
     // As `roadscale run`: the default network when its files are there, else none, said so.

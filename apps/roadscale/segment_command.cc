@@ -31,7 +31,12 @@ struct SegmentArguments {
   std::string frames;
   std::string out;
   double overlay_weight = 0.5;
-  SegmentationOptions segmentation;
+  // One network on the frames in turn: both cores go to its inference.
+  SegmentationOptions segmentation = [] {
+    SegmentationOptions options;
+    options.dnn_threads = 2;
+    return options;
+  }();
 };
 
 void WriteImage(const fs::path& path, const cv::Mat& image) {
