@@ -181,6 +181,16 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
                               const std::atomic<bool>* stop) {
   run_options.Check();
   CheckOption(!segmenters.empty(), "segmenters", "at least one segmenter is needed");
+  // Before any thread starts: OpenCV's thread count is one process-wide setting, and
+  // changing it while another thread runs an OpenCV parallel loop crashes or hangs OpenCV.
+  const int previous_opencv_threads = cv::getNumThreads();
+  if (run_options.opencv_threads > 0) cv::setNumThreads(run_options.opencv_threads);
+  struct RestoreOpenCvThreads {
+    int threads;
+    ~RestoreOpenCvThreads() {
+      if (cv::getNumThreads() != threads) cv::setNumThreads(threads);
+    }
+  } restore_opencv_threads{previous_opencv_threads};
   SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
   PipelineRunResult result;
   pipeline.SetWrittenCallback([&](const FrameRecord& record) {
