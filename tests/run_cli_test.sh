@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # End-to-end tests of `roadscale run`.
-# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|road|errors]
+# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|road|full|errors]
 #   kitti:  --scale oracle on the first 30 shared KITTI 00 frames writes 30 pose rows and 30
 #           frame records, and the trajectory moves forward about as far as the ground truth
 #           (skipped, exit 77, without the shared data);
 #   road:   the default --scale road on the same frames: every step scaled from the road plane
 #           ("ok"), its diagnostics columns in frames.csv, and the trajectory 20-30 m ahead;
+#   full:   the whole system (the shared network, road scale) on the 200 shared frames: its
+#           KITTI error, ATE and length ratio within tolerances of the measured values
+#           (skipped, exit 77, without the frames, their poses or the network);
 #   errors: a missing sequence, --scale oracle without ground truth, an unknown detector and
 #           an unknown scale source each fail with one line saying what is wrong.
 set -euo pipefail
@@ -53,6 +56,29 @@ if [[ "$mode" == "kitti" ]]; then
     fail "last pose is not 20-30 m ahead: $(tail -1 "$out/run/poses_kitti.txt")"
   [[ "$(wc -l <"$out/run/gt_poses_kitti.txt")" -eq 30 ]] || fail "expected 30 ground-truth rows"
   echo "run on KITTI 00 frames 0:30: all checks passed"
+  exit 0
+fi
+
+if [[ "$mode" == "full" ]]; then
+  for needed in "$sequence/image_0/000199.png" "$shared/kitti/poses/00.txt" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
+    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
+  done
+  "$roadscale" run --kitti "$sequence" --out "$out/run" >"$out/log.txt" 2>&1 ||
+    fail "run failed: $(cat "$out/log.txt")"
+  cat "$out/log.txt"
+  expect_line "$out/log.txt" "^Segmentation: onnx espnetv2_s2.0_city_512x256.onnx"
+  # Measured (docs/benchmarks.md, "System"): t_err 1.31 %, ATE se3 0.62 m, length ratio
+  # 0.991; the paper's plane gave 1.95 %, 0.75 m, 0.991.
+  python3 - "$out/run/metrics.json" <<'PY' || fail "metrics out of tolerance: $(cat "$out/run/metrics.json")"
+import json, sys
+m = json.load(open(sys.argv[1]))
+assert m["frames"] == 200, m["frames"]
+assert m["kitti"]["t_err_pct"] < 1.6, m["kitti"]["t_err_pct"]
+assert m["ate_m"]["se3"] < 0.8, m["ate_m"]["se3"]
+assert abs(m["length_ratio"] - 1.0) < 0.02, m["length_ratio"]
+PY
+  echo "run on the 200 shared KITTI 00 frames with the network: all checks passed"
   exit 0
 fi
 
