@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "roadscale/geometry/rigid3.h"
 #include "roadscale/util/error.h"
 
 #include <Eigen/Cholesky>
@@ -9,18 +10,6 @@
 
 namespace roadscale {
 namespace {
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
-
-Eigen::Matrix3d ExpSo3(const Eigen::Vector3d& omega) {
-  const double angle = omega.norm();
-  if (angle < 1e-15) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
-}
 
 // Two unit vectors that with t form an orthonormal basis: the tangent plane of the sphere.
 Eigen::Matrix<double, 3, 2> TangentBasis(const Eigen::Vector3d& t) {
@@ -104,7 +93,7 @@ SampsonRefinementResult RefineRelativePoseSampson(const Eigen::Matrix3d& rotatio
   result.direction = direction.normalized();
   const double n = static_cast<double>(prev.size());
   Evaluation current =
-      Evaluate(Skew(result.direction) * result.rotation, prev, cur, focal_px, options);
+      Evaluate(SkewMatrix(result.direction) * result.rotation, prev, cur, focal_px, options);
   result.initial_rms_px = n > 0 ? std::sqrt(current.sum_squares / n) : 0.0;
   result.final_rms_px = result.initial_rms_px;
   // Five unknowns need at least five equations; with fewer the problem has no unique answer.
@@ -114,12 +103,12 @@ SampsonRefinementResult RefineRelativePoseSampson(const Eigen::Matrix3d& rotatio
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     const Eigen::Matrix3d& R = result.rotation;
     const Eigen::Vector3d& t = result.direction;
-    const Eigen::Matrix3d E = Skew(t) * R;
+    const Eigen::Matrix3d E = SkewMatrix(t) * R;
     const Eigen::Matrix<double, 3, 2> basis = TangentBasis(t);
     // dE for each parameter: rotation R <- exp(w) R, direction t <- normalize(t + basis * d).
     Eigen::Matrix3d dE[5];
-    for (int k = 0; k < 3; ++k) dE[k] = Skew(t) * Skew(Eigen::Vector3d::Unit(k)) * R;
-    for (int k = 0; k < 2; ++k) dE[3 + k] = Skew(basis.col(k)) * R;
+    for (int k = 0; k < 3; ++k) dE[k] = SkewMatrix(t) * SkewMatrix(Eigen::Vector3d::Unit(k)) * R;
+    for (int k = 0; k < 2; ++k) dE[3 + k] = SkewMatrix(basis.col(k)) * R;
 
     Eigen::Matrix<double, 5, 5> H = Eigen::Matrix<double, 5, 5>::Zero();
     Eigen::Matrix<double, 5, 1> g = Eigen::Matrix<double, 5, 1>::Zero();
@@ -154,7 +143,7 @@ SampsonRefinementResult RefineRelativePoseSampson(const Eigen::Matrix3d& rotatio
       if (!step.allFinite()) break;
       const Eigen::Matrix3d R_new = ExpSo3(step.head<3>()) * R;
       const Eigen::Vector3d t_new = (t + basis * step.tail<2>()).normalized();
-      const Evaluation trial = Evaluate(Skew(t_new) * R_new, prev, cur, focal_px, options);
+      const Evaluation trial = Evaluate(SkewMatrix(t_new) * R_new, prev, cur, focal_px, options);
       if (trial.cost < current.cost) {
         const double decrease = (current.cost - trial.cost) / std::max(current.cost, 1e-300);
         result.rotation = R_new;

@@ -29,4 +29,16 @@ Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& matrix) {
   return svd.matrixU() * correction * svd.matrixV().transpose();
 }
 
+Eigen::Matrix3d SkewMatrix(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d skew;
+  skew << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return skew;
+}
+
+Eigen::Matrix3d ExpSo3(const Eigen::Vector3d& omega) {
+  const double angle = omega.norm();
+  if (angle < 1e-15) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
+}
+
 }  // namespace roadscale

@@ -18,4 +18,10 @@ double RotationAngle(const Eigen::Matrix3d& rotation);
 // The nearest rotation matrix (by SVD) to a matrix read from a file with limited digits.
 Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& matrix);
 
+// [v]x: the matrix with [v]x u = v x u.
+Eigen::Matrix3d SkewMatrix(const Eigen::Vector3d& v);
+
+// The rotation by |omega| radians about omega (the exponential map of so(3)).
+Eigen::Matrix3d ExpSo3(const Eigen::Vector3d& omega);
+
 }  // namespace roadscale

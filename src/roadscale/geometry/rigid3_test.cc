@@ -36,5 +36,19 @@ TEST(Rigid3, NearestRotationRepairsRoundedMatrix) {
   EXPECT_LT((repaired - rotation).norm(), 1e-4);
 }
 
+TEST(Rigid3, SkewMatrixIsTheCrossProduct) {
+  const Eigen::Vector3d v(0.3, -1.2, 2.0);
+  const Eigen::Vector3d u(-0.7, 0.4, 1.1);
+  EXPECT_TRUE((SkewMatrix(v) * u).isApprox(v.cross(u)));
+}
+
+TEST(Rigid3, ExpSo3TurnsAboutTheAxis) {
+  const Eigen::Vector3d omega = 0.2 * Eigen::Vector3d(1.0, 2.0, -2.0).normalized();
+  EXPECT_TRUE(
+      ExpSo3(omega).isApprox(Eigen::AngleAxisd(0.2, omega.normalized()).toRotationMatrix()));
+  EXPECT_TRUE(ExpSo3(Eigen::Vector3d::Zero()).isApprox(Eigen::Matrix3d::Identity()));
+  EXPECT_NEAR(RotationAngle(ExpSo3(Eigen::Vector3d(1e-9, 0.0, 0.0))), 1e-9, 1e-15);
+}
+
 }  // namespace
 }  // namespace roadscale

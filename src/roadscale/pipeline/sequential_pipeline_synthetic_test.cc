@@ -30,17 +30,23 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
-TEST(SequentialPipelineSynthetic, OracleScaleFollowsTheTrueMotionOfAnUrbanScene) {
-  constexpr int kFrames = 25;
-  testing::TempDir dir;
-  synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), kFrames);
+// Renders `frames` frames of the urban preset into `dir`; the options that open them.
+FrameSourceOptions RenderUrbanStreet(int frames, const testing::TempDir& dir) {
+  synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), frames);
   synth::SceneWriterOptions writer;
   writer.out_dir = dir.path().string();
   synth::WriteSyntheticSequence(scene, writer);
-
   FrameSourceOptions source_options;
   source_options.input = (dir.path() / "sequences" / "00").string();
   source_options.type = FrameSourceType::kKitti;
+  return source_options;
+}
+
+TEST(SequentialPipelineSynthetic, OracleScaleFollowsTheTrueMotionOfAnUrbanScene) {
+  constexpr int kFrames = 25;
+  testing::TempDir dir;
+
+  const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
   const auto source = OpenFrameSource(source_options);
   ASSERT_NE(source->ground_truth(), nullptr);
   const Trajectory gt = *source->ground_truth();
@@ -113,13 +119,7 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
   constexpr int kFrames = 16;
   constexpr size_t kFirstScaled = 8;
   testing::TempDir dir;
-  synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), kFrames);
-  synth::SceneWriterOptions writer;
-  writer.out_dir = dir.path().string();
-  synth::WriteSyntheticSequence(scene, writer);
-  FrameSourceOptions source_options;
-  source_options.input = (dir.path() / "sequences" / "00").string();
-  source_options.type = FrameSourceType::kKitti;
+  const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
   const Trajectory gt = *OpenFrameSource(source_options)->ground_truth();
   const auto true_step = [&](int k) {
     return (gt.world_from_cam[k].translation() - gt.world_from_cam[k - 1].translation()).norm();
@@ -208,13 +208,7 @@ std::string FileText(const std::string& path) {
 TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) {
   constexpr int kFrames = 14;
   testing::TempDir dir;
-  synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), kFrames);
-  synth::SceneWriterOptions writer;
-  writer.out_dir = dir.path().string();
-  synth::WriteSyntheticSequence(scene, writer);
-  FrameSourceOptions source_options;
-  source_options.input = (dir.path() / "sequences" / "00").string();
-  source_options.type = FrameSourceType::kKitti;
+  const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
   const std::string labels = source_options.input + "/semantic";
 
   const auto run = [&](int threads, int failing_frame, const std::string& out) {

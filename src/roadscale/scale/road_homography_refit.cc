@@ -10,18 +10,6 @@
 namespace roadscale {
 namespace {
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d skew;
-  skew << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return skew;
-}
-
-Eigen::Matrix3d ExpRotation(const Eigen::Vector3d& omega) {
-  const double angle = omega.norm();
-  if (angle < 1e-15) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
-}
-
 // Columns spanning the directions of w that the refit may change: all of them, or those
 // perpendicular to the direction of travel.
 Eigen::MatrixXd PlaneBasis(const Eigen::Vector3d& travel_direction, bool tangent_to_travel) {
@@ -91,7 +79,7 @@ std::optional<RoadHomographyRefit> RefitRoadHomography(
       Eigen::MatrixXd jacobian(2, unknowns);
       jacobian.leftCols(plane_unknowns) = projection * t * ray.transpose() * basis;
       // exp(dw) R r = R r + dw x (R r): the derivative is -[R r]x.
-      if (options.refine_rotation) jacobian.rightCols(3) = -projection * Skew(rotated);
+      if (options.refine_rotation) jacobian.rightCols(3) = -projection * SkewMatrix(rotated);
       const double norm = residual.norm();
       const double weight = norm <= options.loss_scale_px ? 1.0 : options.loss_scale_px / norm;
       normal_matrix += weight * jacobian.transpose() * jacobian;
@@ -104,7 +92,7 @@ std::optional<RoadHomographyRefit> RefitRoadHomography(
     const Eigen::VectorXd step = solver.solve(-gradient);
     if (!step.allFinite()) return std::nullopt;
     w += basis * step.head(plane_unknowns);
-    if (options.refine_rotation) rotation = ExpRotation(step.tail(3)) * rotation;
+    if (options.refine_rotation) rotation = ExpSo3(step.tail(3)) * rotation;
     result.iterations = iteration + 1;
     // Converged when the plane's height changes by less than 1e-7 of itself.
     if ((basis * step.head(plane_unknowns)).norm() < 1e-7 * w.norm() &&
