@@ -146,6 +146,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("homography_refit", &s.homography_refit),
         Scalar("homography_refine_rotation", &s.homography.refine_rotation),
         Scalar("homography_tangent_to_travel", &s.homography.tangent_to_travel),
+        Scalar("homography_travel_prior_px_per_deg", &s.homography.travel_prior_px_per_deg),
         Scalar("homography_loss_scale_px", &s.homography.loss_scale_px),
         Scalar("homography_max_iterations", &s.homography.max_iterations),
         Scalar("min_parallax_deg", &s.triangulation.min_parallax_deg),

@@ -27,6 +27,8 @@ void RoadHomographyRefitOptions::Check() const {
   CheckOption(std::isfinite(loss_scale_px) && loss_scale_px > 0.0, "scale.homography_loss_scale_px",
               "must be a positive number of pixels");
   CheckOption(max_iterations >= 1, "scale.homography_max_iterations", "must be at least 1");
+  CheckOption(std::isfinite(travel_prior_px_per_deg) && travel_prior_px_per_deg >= 0.0,
+              "scale.homography_travel_prior_px_per_deg", "must be >= 0 pixels per degree");
 }
 
 std::optional<Eigen::Vector2d> TransferThroughRoadPlane(const Eigen::Vector2d& prev_pixel,
@@ -85,6 +87,15 @@ std::optional<RoadHomographyRefit> RefitRoadHomography(
       normal_matrix += weight * jacobian.transpose() * jacobian;
       gradient += weight * jacobian.transpose() * residual;
       squared_sum += residual.squaredNorm();
+    }
+    if (!options.tangent_to_travel && options.travel_prior_px_per_deg > 0.0) {
+      // One more residual: the angle between the plane and the travel, in pixels.
+      const double px_per_rad = options.travel_prior_px_per_deg * 180.0 / M_PI;
+      Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(1, unknowns);
+      jacobian.leftCols(3) = px_per_rad * travel_direction.transpose() / w.norm();
+      const double residual = px_per_rad * w.dot(travel_direction) / w.norm();
+      normal_matrix += jacobian.transpose() * jacobian;
+      gradient += jacobian.transpose() * residual;
     }
     result.rms_px = std::sqrt(squared_sum / static_cast<double>(indices.size()));
     const Eigen::LDLT<Eigen::MatrixXd> solver(normal_matrix);

@@ -37,6 +37,12 @@ struct RoadHomographyRefitOptions {
   // track, is already better than what the road's tracks alone can tell.
   bool refine_rotation = false;
   bool tangent_to_travel = true;
+  // Without tangent_to_travel, > 0 pulls the normal towards perpendicular to the travel
+  // instead of holding it there: a tilt of 1 degree costs as much as one track this many
+  // pixels off (3: a tilt of 0.1 deg weighs as a track 0.3 px off, KLT's accuracy). For roads
+  // whose grade changes ahead (hills), where the car's own plane is not the road's ahead.
+  // 0: no pull (a free normal).
+  double travel_prior_px_per_deg = 0.0;
   // Huber loss scale in pixels: KLT tracks are good to a few tenths of a pixel.
   double loss_scale_px = 1.0;
   int max_iterations = 10;
