@@ -487,6 +487,8 @@ std::vector<Configuration> Configurations() {
                                : mask == MaskKind::kCorridor ? ", mask"
                                                              : ", semantic";
     list.push_back({"paper default" + suffix, none, mask});
+    list.push_back({"roadscale default (pixel refit)" + suffix,
+                    [](Options* o) { o->homography_refit = true; }, mask});
     list.push_back({"no selection (RANSAC only)" + suffix,
                     [](Options* o) {
                       o->use_depth_vote = false;
@@ -644,6 +646,8 @@ int Main(int argc, char** argv) {
     const auto change = configuration.change;
     configuration.change = [change, min_parallax_deg](ScaleEstimatorOptions* options) {
       options->triangulation.min_parallax_deg = min_parallax_deg;
+      // Every row is the paper's pipeline (its least-squares plane) unless it says otherwise.
+      options->homography_refit = false;
       change(options);
     };
   }
