@@ -145,6 +145,7 @@ TEST(RoadHomographyRefit, ATravelPriorFollowsARoadThatBendsAwayFromTheCarsPlane)
   EXPECT_GT(hard, 0.05);
   EXPECT_LT(free, 1e-6);
   EXPECT_LT(pulled, hard / 3.0);
+  EXPECT_GT(pulled, 0.002);  // the pull is felt: not the free fit
 }
 
 TEST(RoadHomographyRefit, RefusesTooFewTracksAndAPlaneBehindTheCamera) {

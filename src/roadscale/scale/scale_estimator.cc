@@ -180,10 +180,10 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
     if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
     plane = *refit;
   }
+  const std::vector<int> inliers = Compose(selection, fit.inliers);  // into triangulated
   if (options_.homography_refit) {
-    const std::vector<int> inlier_tracks = Compose(selection, fit.inliers);
     const std::optional<RoadHomographyRefit> refit =
-        RefitRoadHomography(pixels, Gather(cur_pixels, triangulated.track_indices), inlier_tracks,
+        RefitRoadHomography(pixels, Gather(cur_pixels, triangulated.track_indices), inliers,
                             cur_from_prev, camera_, plane, options_.homography);
     if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
     plane = refit->plane;
@@ -197,8 +197,7 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
   estimate.plane = plane;
   estimate.raw_scale = last_raw_scale_;
   estimate.scale = options_.use_filter ? filter_.Add(last_raw_scale_) : last_raw_scale_;
-  estimate.road_track_indices =
-      Compose(triangulated.track_indices, Compose(selection, fit.inliers));
+  estimate.road_track_indices = Compose(triangulated.track_indices, inliers);
   return estimate;
 }
 
