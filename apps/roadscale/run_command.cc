@@ -194,11 +194,16 @@ void RunRun(const RunArguments& arguments) {
                   "sequence folder), and there are none");
     }
     scale_source = std::make_unique<OracleScaleSource>(*ground_truth);
+    // The oracle gives each frame pair's length: only the frame-to-frame host asks for them.
+    config.pipeline.mapping.mode = MappingOptions::Mode::kFrameToFrame;
   } else {
     ScaleEstimatorOptions scale_options = config.scale;
     scale_options.camera_height = camera.h0;
     scale_source = std::make_unique<RoadScaleSource>(camera.camera, scale_options);
   }
+  config.pipeline.road_selection = config.scale;
+  config.pipeline.road_selection.camera_height = camera.h0;
+  const bool keyframe_mode = config.pipeline.mapping.mode == MappingOptions::Mode::kKeyframe;
 
   const std::string config_path =
       (std::filesystem::path(arguments.out) / "config_used.yaml").string();
@@ -208,6 +213,12 @@ void RunRun(const RunArguments& arguments) {
             << "Scale:  " << scale_source->Name()
             << (config.scale_source == "road" ? " (h0 = " + std::to_string(camera.h0) + " m)"
                                               : std::string())
+            << '\n'
+            << "Mapping: " << MappingModeName(config.pipeline.mapping.mode)
+            << (keyframe_mode
+                    ? " (window of " + std::to_string(config.pipeline.mapping.window_size) +
+                          " keyframes; rows are written as they leave it)"
+                    : std::string())
             << '\n'
             << "Frontend: " << DetectorTypeName(config.pipeline.frontend.tracker.detector.type)
             << " features\n"
@@ -265,9 +276,11 @@ void RunRun(const RunArguments& arguments) {
            std::to_string(camera.camera.height) + ", h0 " + std::to_string(camera.h0) + " m"},
       {"config", arguments.config.empty() ? "defaults" : arguments.config},
       {"segmentation", segmentation_text},
-      {"scale", scale_source->Name()}};
+      {"scale", scale_source->Name()},
+      {"mapping", MappingModeName(config.pipeline.mapping.mode)}};
   report.records = std::move(records);
-  report.scale_diagnostics_header = scale_source->DiagnosticsCsvHeader();
+  report.scale_diagnostics_header =
+      keyframe_mode ? MappedFrameCsvHeader() : scale_source->DiagnosticsCsvHeader();
   report.est_world_from_cam = ReadKittiTrajectory(poses_path).world_from_cam;
   report.wall_time_s = result.summary.wall_s;
   if (ground_truth != nullptr && ground_truth->world_from_cam.size() >= report.records.size()) {

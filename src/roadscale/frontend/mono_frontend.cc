@@ -77,6 +77,10 @@ FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
                        : Eigen::Matrix3d::Identity();
   frame.tracker = tracker_.stats();
   frame.num_tracks = static_cast<int>(tracker_.tracks().size());
+  frame.observations.reserve(tracker_.tracks().size());
+  for (const Track& track : tracker_.tracks()) {
+    frame.observations.push_back({track.id, track.pixels.back()});
+  }
   return frame;
 }
 

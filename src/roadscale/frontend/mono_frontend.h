@@ -26,6 +26,12 @@ struct FrontendOptions {
   void Check() const;
 };
 
+// A track's pixel in one frame.
+struct TrackObservation {
+  int64_t track_id = 0;
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
+};
+
 // Everything the frontend measured in one frame.
 struct FrontendFrame {
   int frame_index = 0;
@@ -35,6 +41,9 @@ struct FrontendFrame {
   TrackerFrameStats tracker;  // counts, and the pyramid/tracking/detection times
   double motion_ms = 0.0;
   int num_tracks = 0;  // live tracks after outlier removal and re-detection
+  // Every live track's pixel in this frame after outlier removal and re-detection, in
+  // increasing id order: what a map sees of the frame (new tracks included).
+  std::vector<TrackObservation> observations;
 };
 
 // The monocular frontend (the paper's "MonoVO" host): features on a grid, KLT tracking and

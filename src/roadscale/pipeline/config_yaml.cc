@@ -89,6 +89,7 @@ std::vector<Block> Blocks(RunConfig& c) {
   TwoViewMotionOptions& m = f.motion;
   ScaleEstimatorOptions& s = c.scale;
   SegmentationOptions& g = c.segmentation;
+  MappingOptions& a = c.pipeline.mapping;
   return {
       {"Camera",
        {Optional("fx", &c.camera.fx), Optional("fy", &c.camera.fy), Optional("cx", &c.camera.cx),
@@ -165,6 +166,28 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("filter_gaussian_sigma", &s.filter.gaussian_sigma),
         Scalar("filter_max_change_per_frame", &s.filter.max_change_per_frame),
         Scalar("max_frames_before_first_scale", &c.pipeline.max_frames_before_first_scale)}},
+      {"Mapping",
+       {Enum("mode", &a.mode, {"keyframe", "frame_to_frame"}),
+        Scalar("window_size", &a.window_size),
+        Scalar("keyframe_min_parallax_px", &a.keyframes.min_parallax_px),
+        Scalar("keyframe_min_tracked_share", &a.keyframes.min_tracked_share),
+        Scalar("keyframe_max_frame_gap", &a.keyframes.max_frame_gap),
+        Scalar("landmark_min_parallax_deg", &a.landmarks.min_parallax_deg),
+        Scalar("landmark_max_reprojection_error_px", &a.landmarks.max_reprojection_error_px),
+        Scalar("road_min_points_per_pair", &a.road_min_points_per_pair),
+        Scalar("localization_min_landmarks", &a.localization.min_landmarks),
+        Scalar("localization_loss_px", &a.localization.loss_px),
+        Scalar("localization_max_iterations", &a.localization.max_iterations),
+        Scalar("localization_inlier_threshold_px", &a.localization.inlier_threshold_px),
+        Scalar("localization_min_inlier_ratio", &a.localization.min_inlier_ratio),
+        Scalar("localization_ransac_iterations", &a.localization.ransac_iterations),
+        Scalar("ba_max_iterations", &a.bundle_adjustment.max_iterations),
+        Scalar("ba_reprojection_loss_px", &a.bundle_adjustment.reprojection_loss_px),
+        Scalar("ba_max_reprojection_error_px", &a.bundle_adjustment.max_reprojection_error_px),
+        Scalar("camera_height_sigma_m", &a.bundle_adjustment.camera_height_sigma_m),
+        Scalar("camera_height_loss", &a.bundle_adjustment.camera_height_loss),
+        Scalar("min_road_landmarks", &a.bundle_adjustment.min_road_landmarks),
+        Scalar("road_outlier_sigmas", &a.bundle_adjustment.road_outlier_sigmas)}},
       {"Segmentation",
        {Scalar("model", &g.model), Scalar("labels", &c.labels), Scalar("every", &g.every),
         Scalar("dnn_threads", &g.dnn_threads), Scalar("workers", &g.workers),
@@ -199,7 +222,8 @@ void ReadRunConfig(const std::string& path, RunConfig* config) {
   }
   if (root.IsNull()) return;
   if (!root.IsMap())
-    ThrowAt(path, root.Mark(), "expected blocks Camera:, Frontend:, Scale:, Segmentation:");
+    ThrowAt(path, root.Mark(),
+            "expected blocks Camera:, Frontend:, Scale:, Mapping:, Segmentation:");
   std::vector<Block> blocks = Blocks(*config);
   for (const auto& entry : root) {
     const std::string block_name = entry.first.as<std::string>();
@@ -208,9 +232,9 @@ void ReadRunConfig(const std::string& path, RunConfig* config) {
       if (b.name == block_name) block = &b;
     }
     if (block == nullptr) {
-      ThrowAt(
-          path, entry.first.Mark(),
-          "unknown block '" + block_name + "' (expected Camera, Frontend, Scale or Segmentation)");
+      ThrowAt(path, entry.first.Mark(),
+              "unknown block '" + block_name +
+                  "' (expected Camera, Frontend, Scale, Mapping or Segmentation)");
     }
     if (entry.second.IsNull()) continue;
     if (!entry.second.IsMap())

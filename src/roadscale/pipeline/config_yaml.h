@@ -36,7 +36,7 @@ struct RunConfig {
 };
 
 // Reads a config file over `config` (keys it does not name keep their values). The file has
-// the blocks Camera:, Frontend:, Scale:, Segmentation:, each a mapping, each key optional
+// the blocks Camera:, Frontend:, Scale:, Mapping:, Segmentation:, each a mapping, each key optional
 // (config/kitti.yaml lists them all with the paper's values). Throws Error naming the file
 // and the line for a YAML syntax error, an unknown block or key, or a value of the wrong
 // type.

@@ -38,6 +38,8 @@ void WriteLine(std::ofstream& file, const std::string& path, const std::string& 
 
 void PipelineOptions::Check() const {
   frontend.Check();
+  mapping.Check();
+  road_selection.Check();
   CheckOption(max_frames_before_first_scale >= 0, "scale.max_frames_before_first_scale",
               "must be >= 0 (0: never wait for the first scale)");
 }
@@ -67,6 +69,11 @@ std::string FormatFrameRecordCsv(const FrameRecord& r) {
 SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& scale,
                                        const PipelineOptions& options, const std::string& out_dir)
     : scale_(scale),
+      backend_(options.mapping.mode == MappingOptions::Mode::kKeyframe
+                   ? std::make_unique<KeyframeBackend>(
+                         camera.camera, options.road_selection.camera_height, options.mapping,
+                         options.road_selection, options.max_frames_before_first_scale)
+                   : nullptr),
       frontend_(camera.camera, options.frontend),
       max_waiting_frames_(options.max_frames_before_first_scale) {
   options.Check();
@@ -82,9 +89,13 @@ SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& s
   poses_ = OpenOutput(poses_path_);
   tum_ = OpenOutput(tum_path_);
   records_ = OpenOutput(records_path_);
-  const std::string scale_columns = scale_.DiagnosticsCsvHeader();
+  const std::string scale_columns = DiagnosticsCsvHeader();
   WriteLine(records_, records_path_,
             FrameRecordCsvHeader() + (scale_columns.empty() ? "" : "," + scale_columns));
+}
+
+std::string SequentialPipeline::DiagnosticsCsvHeader() const {
+  return backend_ ? MappedFrameCsvHeader() : scale_.DiagnosticsCsvHeader();
 }
 
 TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
@@ -127,6 +138,19 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   const Clock::time_point start = Clock::now();
   FrameRecord& record = tracked.record;
   const FrontendFrame& result = tracked.frontend;
+
+  if (backend_) {
+    records_waiting_for_backend_.push_back(record);
+    const Clock::time_point backend_start = Clock::now();
+    const std::vector<MappedFrame> finished = backend_->AddFrame(result, tracked.road_mask);
+    // The window holds at least two keyframes, so this frame is never among the finished.
+    FrameRecord& waiting = records_waiting_for_backend_.back();
+    waiting.scale_ms = MillisecondsSince(backend_start);
+    waiting.total_ms += MillisecondsSince(start);
+    for (const MappedFrame& mapped : finished) WriteMappedFrame(mapped);
+    record.status = "waiting";
+    return record;
+  }
 
   ScaleResult scale;
   if (result.motion.status != MotionStatus::kFirstFrame) {
@@ -183,10 +207,45 @@ void SequentialPipeline::ApplyAndWrite(FrameRecord record, const TwoViewMotion& 
       break;
   }
 
-  WriteLine(poses_, poses_path_, FormatKittiRow(integrator_.world_from_cam()));
-  WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, integrator_.world_from_cam()));
+  WriteRows(record, integrator_.world_from_cam());
+}
+
+void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
+  if (records_waiting_for_backend_.empty() ||
+      records_waiting_for_backend_.front().index != static_cast<size_t>(mapped.frame_index)) {
+    throw Error("keyframe back end: frame " + std::to_string(mapped.frame_index) +
+                " finished out of order (internal error)");
+  }
+  FrameRecord record = records_waiting_for_backend_.front();
+  records_waiting_for_backend_.pop_front();
+  record.keyframe = mapped.keyframe;
+  record.bundle_adjustment_ms = mapped.bundle_adjustment.milliseconds;
+  record.step_length_m =
+      (mapped.world_from_cam.translation() - last_written_world_from_cam_.translation()).norm();
+  record.scale_valid = mapped.scale != MappedFrame::Scale::kNone;
+  record.scale_status = mapped.localization;
+  if (record.motion_status == MotionStatus::kFirstFrame) {
+    record.pose_update = PoseUpdate::kFirst;
+    record.status = "first";
+  } else if (mapped.stationary) {
+    record.pose_update = PoseUpdate::kKept;
+    record.status = "stationary";
+  } else {
+    record.pose_update = PoseUpdate::kMotion;
+    record.status = mapped.scale == MappedFrame::Scale::kRoad      ? "ok"
+                    : mapped.scale == MappedFrame::Scale::kCarried ? "held"
+                                                                   : "unscaled";
+  }
+  record.scale_diagnostics_csv = FormatMappedFrameCsv(mapped);
+  last_written_world_from_cam_ = mapped.world_from_cam;
+  WriteRows(record, mapped.world_from_cam);
+}
+
+void SequentialPipeline::WriteRows(const FrameRecord& record, const Rigid3d& world_from_cam) {
+  WriteLine(poses_, poses_path_, FormatKittiRow(world_from_cam));
+  WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, world_from_cam));
   // The scale source's own columns, left empty in frames it did not see.
-  const std::string scale_columns = scale_.DiagnosticsCsvHeader();
+  const std::string scale_columns = DiagnosticsCsvHeader();
   std::string row = FormatFrameRecordCsv(record);
   if (!scale_columns.empty()) {
     row += record.scale_diagnostics_csv.empty()
@@ -211,7 +270,12 @@ void SequentialPipeline::WriteWaitingFrames(double first_length_m, double first_
   }
 }
 
-void SequentialPipeline::Finish() { WriteWaitingFrames(0.0, 0.0); }
+void SequentialPipeline::Finish() {
+  WriteWaitingFrames(0.0, 0.0);
+  if (backend_) {
+    for (const MappedFrame& mapped : backend_->Finish()) WriteMappedFrame(mapped);
+  }
+}
 
 SequentialPipeline::~SequentialPipeline() {
   // Reached without Finish only when an error ends the run: whoever set the callback may be
@@ -265,6 +329,10 @@ void RunSummary::Add(const FrameRecord& record) {
   }
   if (record.num_detected > 0) ++detection_frames;
   if (record.scale_valid) ++scaled_frames;
+  if (record.keyframe) {
+    ++keyframes;
+    bundle_adjustment_ms.push_back(record.bundle_adjustment_ms);
+  }
 }
 
 std::string RunSummary::Format() const {
@@ -278,6 +346,13 @@ std::string RunSummary::Format() const {
       << ", tracking " << mean_tracking_ms << ", detection " << mean_detection_ms << ", motion "
       << mean_motion_ms << ", scale " << mean_scale_ms << ", total " << mean_total_ms;
   out << '\n';
+  if (keyframes > 0) {
+    std::vector<double> sorted = bundle_adjustment_ms;
+    std::sort(sorted.begin(), sorted.end());
+    out << "Keyframes: " << keyframes << "; bundle adjustment ms per keyframe: median "
+        << sorted[sorted.size() / 2] << ", p95 "
+        << sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)] << '\n';
+  }
   if (wall_s > 0.0 && frames > 0) {
     out << "Wall clock: " << std::setprecision(2) << wall_s << " s, " << std::setprecision(1)
         << static_cast<double>(frames) / wall_s << " frames/s end to end\n";

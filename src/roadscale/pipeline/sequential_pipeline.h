@@ -1,13 +1,16 @@
 #pragma once
 
 #include <cstddef>
+#include <deque>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "roadscale/frontend/mono_frontend.h"
 #include "roadscale/io/frame_source.h"
+#include "roadscale/mapping/keyframe_backend.h"
 #include "roadscale/pipeline/pose_integrator.h"
 #include "roadscale/pipeline/scale_source.h"
 #include "roadscale/segmentation/segmentation_result.h"
@@ -24,6 +27,13 @@ struct PipelineOptions {
   // Past this many frames, and when the run ends without a scale, the waiting frames are
   // written with unit steps ("unscaled"). 0: never wait. 100 frames = 10 s at KITTI's 10 Hz.
   int max_frames_before_first_scale = 100;
+  // The host VO: the keyframe back end (mapping/, the default) or the paper's frame-to-frame
+  // chaining with the scale source's length per step. The keyframe back end makes its scale
+  // itself, from the road selection with `road_selection`'s options (camera_height = h0); the
+  // scale source then goes unused. In keyframe mode a frame's rows are written when its
+  // keyframe interval leaves the bundle-adjusted window (MappingOptions::window_size).
+  MappingOptions mapping;
+  ScaleEstimatorOptions road_selection;
 
   // Throws Error naming the first invalid option.
   void Check() const;
@@ -65,6 +75,11 @@ struct FrameRecord {
   // The sum of the stages' times and the writing. With the threaded runner the stages
   // overlap, so the run's frame rate is not 1000 / total_ms.
   double total_ms = 0.0;
+
+  // Keyframe mode: the frame became a keyframe, and the bundle adjustment it started took
+  // this long (also counted in scale_ms, the back end's time for the frame).
+  bool keyframe = false;
+  double bundle_adjustment_ms = 0.0;
 };
 
 // The header and one row of OUT/frames.csv (without the scale source's columns).
@@ -130,6 +145,9 @@ class SequentialPipeline {
   const std::string& poses_path() const { return poses_path_; }
   const std::string& tum_path() const { return tum_path_; }
   const std::string& records_path() const { return records_path_; }
+  // The columns after FrameRecordCsvHeader() in OUT/frames.csv: the scale source's, or in
+  // keyframe mode the back end's (MappedFrameCsvHeader).
+  std::string DiagnosticsCsvHeader() const;
 
  private:
   // A frame's pose from the integrator, and its rows written. `backfilled`: the length is
@@ -139,6 +157,9 @@ class SequentialPipeline {
   // Writes the waiting frames: back-filled from the first scaled step's length and parallax,
   // or without a scale (unit steps) when `first_length_m` is 0.
   void WriteWaitingFrames(double first_length_m, double first_parallax_px);
+  // Keyframe mode: the record of a frame the back end has finished, with its pose.
+  void WriteMappedFrame(const MappedFrame& mapped);
+  void WriteRows(const FrameRecord& record, const Rigid3d& world_from_cam);
 
   struct WaitingFrame {
     FrameRecord record;
@@ -146,6 +167,9 @@ class SequentialPipeline {
   };
 
   ScaleSource& scale_;
+  std::unique_ptr<KeyframeBackend> backend_;  // keyframe mode only
+  std::deque<FrameRecord> records_waiting_for_backend_;
+  Rigid3d last_written_world_from_cam_ = Rigid3d::Identity();
   MonoFrontend frontend_;
   PoseIntegrator integrator_;
   int max_waiting_frames_ = 0;
@@ -171,6 +195,8 @@ struct RunSummary {
   size_t constant_velocity_frames = 0;
   size_t detection_frames = 0;  // frames with a re-detection
   size_t scaled_frames = 0;     // frames whose step length came from the scale source
+  size_t keyframes = 0;
+  std::vector<double> bundle_adjustment_ms;  // one per keyframe
   double mean_load_ms = 0.0;
   double mean_segmentation_ms = 0.0;
   double mean_tracking_ms = 0.0;

@@ -169,8 +169,8 @@ void SceneOptions::Check() const {
 }
 
 const std::vector<std::string>& PresetNames() {
-  static const std::vector<std::string> names = {"urban", "highway", "stop_and_go", "hills",
-                                                 "bumpy"};
+  static const std::vector<std::string> names = {"urban", "highway", "stop_and_go",
+                                                 "hills", "bumpy",   "traffic_jam"};
   return names;
 }
 
@@ -298,6 +298,35 @@ SceneOptions PresetSceneOptions(const std::string& name) {
     options.vehicle.bump_pitch_deg = 1.5;
     options.traffic.parked_fraction = 0.0;
     options.scenery.building_fraction = 0.6;
+    return options;
+  }
+  if (name == "traffic_jam") {
+    // The paper's title scenario: dense town traffic at walking pace. The car creeps at up to
+    // 2.5 m/s and slows smoothly to stops, a lead car 5-8 m ahead hides most of the lane,
+    // slow cars fill the lanes beside it in both directions, pedestrians cross the view.
+    options.road.lanes_same = 2;
+    options.road.lanes_opposite = 1;
+    VehicleOptions& vehicle = options.vehicle;
+    vehicle.initial_speed = 1.5;
+    vehicle.speed_min = 0.5;
+    vehicle.speed_max = 2.5;
+    vehicle.cruise_min_s = 2.0;
+    vehicle.cruise_max_s = 6.0;
+    vehicle.stop_probability = 0.6;
+    vehicle.stop_min_s = 1.0;
+    vehicle.stop_max_s = 4.0;
+    vehicle.acceleration = 0.8;
+    vehicle.deceleration = 0.8;
+    TrafficOptions& traffic = options.traffic;
+    traffic.parked_fraction = 0.8;
+    traffic.lead_gap_min = 5.0;
+    traffic.lead_gap_max = 8.0;
+    traffic.oncoming_per_km = 120.0;
+    traffic.same_direction_per_km = 150.0;
+    traffic.overtaking_per_km = 0.0;
+    traffic.car_speed_min = 1.0;
+    traffic.car_speed_max = 4.0;
+    traffic.pedestrians_per_100m = 8.0;
     return options;
   }
   std::string known;

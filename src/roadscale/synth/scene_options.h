@@ -141,7 +141,7 @@ struct SceneOptions {
   void Check() const;
 };
 
-// urban, highway, stop_and_go, hills, bumpy; throws Error for any other name.
+// urban, highway, stop_and_go, hills, bumpy, traffic_jam; throws Error for any other name.
 SceneOptions PresetSceneOptions(const std::string& name);
 const std::vector<std::string>& PresetNames();
 

@@ -1,0 +1,75 @@
+#include "roadscale/mapping/frame_localizer.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/mapping/mapping_test_scene.h"
+
+namespace roadscale {
+namespace {
+
+struct LocalizationCase {
+  testing::MappingTestScene scene = testing::MappingTestScene::Street(20, 1.0, 0.5);
+  std::map<int64_t, Landmark> landmarks;
+  std::vector<TrackObservation> observations;
+  int frame = 12;
+
+  explicit LocalizationCase(double outlier_share) {
+    for (size_t id = 0; id < scene.points.size(); ++id) {
+      landmarks[static_cast<int64_t>(id)].position = scene.points[id];
+    }
+    observations = scene.Observe(frame, 0.3, 11);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (TrackObservation& o : observations) {
+      if (unit(rng) < outlier_share) o.pixel += Eigen::Vector2d(15.0 + 40.0 * unit(rng), 10.0);
+    }
+  }
+  double CentreError(const Rigid3d& cam_from_world) const {
+    return (cam_from_world.inverse().translation() -
+            scene.cam_from_world[frame].inverse().translation())
+        .norm();
+  }
+};
+
+TEST(LocalizeFrame, RefinesAPredictedPoseDespiteOutliers) {
+  const LocalizationCase c(0.2);
+  const Rigid3d guess =
+      MakeRigid3d(
+          Eigen::AngleAxisd(1.5 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+          Eigen::Vector3d(0.2, -0.1, 0.4)) *
+      c.scene.cam_from_world[c.frame];
+  const FrameLocalization result =
+      LocalizeFrame(c.observations, c.landmarks, c.scene.camera, guess, {});
+  ASSERT_TRUE(result.ok);
+  EXPECT_FALSE(result.used_ransac);
+  EXPECT_LT(c.CentreError(result.cam_from_world), 0.02);
+  EXPECT_GT(result.num_inliers, 0.7 * result.num_landmarks);
+}
+
+TEST(LocalizeFrame, FallsBackOnRansacWhenThePredictionIsWrong) {
+  const LocalizationCase c(0.3);
+  // A prediction half a turn off: the refinement cannot reach the pose from there.
+  const Rigid3d guess =
+      MakeRigid3d(Eigen::AngleAxisd(M_PI * 0.9, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+                  Eigen::Vector3d(3.0, 0.0, -5.0)) *
+      c.scene.cam_from_world[c.frame];
+  const FrameLocalization result =
+      LocalizeFrame(c.observations, c.landmarks, c.scene.camera, guess, {});
+  ASSERT_TRUE(result.ok);
+  EXPECT_TRUE(result.used_ransac);
+  EXPECT_LT(c.CentreError(result.cam_from_world), 0.02);
+}
+
+TEST(LocalizeFrame, TooFewLandmarksIsNoPose) {
+  const LocalizationCase c(0.0);
+  std::vector<TrackObservation> few(c.observations.begin(), c.observations.begin() + 8);
+  const FrameLocalization result =
+      LocalizeFrame(few, c.landmarks, c.scene.camera, c.scene.cam_from_world[c.frame], {});
+  EXPECT_FALSE(result.ok);
+  EXPECT_EQ(result.num_landmarks, 8);
+}
+
+}  // namespace
+}  // namespace roadscale

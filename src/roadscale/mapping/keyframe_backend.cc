@@ -1,0 +1,312 @@
+#include "roadscale/mapping/keyframe_backend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "roadscale/frontend/two_view_motion.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
+  return cam_from_world.inverse().translation();
+}
+
+ScaleEstimatorOptions SelectionOptions(ScaleEstimatorOptions options, double camera_height,
+                                       int min_points) {
+  options.camera_height = camera_height;
+  options.ransac.min_points = std::max(min_points, 3);
+  // The selection's plane only chooses road points and gives their normal; the window's
+  // adjustment makes the scale, so the per-pair filter has nothing to do.
+  options.use_filter = false;
+  return options;
+}
+
+}  // namespace
+
+void MappingOptions::Check() const {
+  CheckOption(window_size >= 2, "mapping.window_size", "must be >= 2 keyframes");
+  CheckOption(road_min_points_per_pair >= 3, "mapping.road_min_points_per_pair",
+              "must be >= 3 (a plane needs three points)");
+  keyframes.Check();
+  landmarks.Check();
+  localization.Check();
+  bundle_adjustment.Check();
+}
+
+std::string MappedFrameCsvHeader() {
+  return "keyframe,keyframe_reason,localization,map_scale,landmarks_seen,road_points,pair_scale,"
+         "ba_iterations,ba_cost_before,ba_cost_after,ba_ms,window_keyframes,window_landmarks,"
+         "window_road_landmarks,ba_removed_observations";
+}
+
+std::string FormatMappedFrameCsv(const MappedFrame& frame) {
+  const BundleAdjustmentReport& ba = frame.bundle_adjustment;
+  const char* scale = frame.scale == MappedFrame::Scale::kRoad      ? "road"
+                      : frame.scale == MappedFrame::Scale::kCarried ? "carried"
+                                                                    : "none";
+  std::ostringstream out;
+  out << std::setprecision(6) << (frame.keyframe ? 1 : 0) << ',' << frame.keyframe_reason << ','
+      << frame.localization << ',' << scale << ',' << frame.landmarks_seen << ','
+      << frame.road_points << ',' << frame.pair_scale << ',' << ba.iterations << ','
+      << ba.initial_cost << ',' << ba.final_cost << ',' << ba.milliseconds << ','
+      << ba.num_keyframes << ',' << ba.num_landmarks << ',' << ba.num_road_landmarks << ','
+      << ba.removed_observations;
+  return out.str();
+}
+
+std::string MappingModeName(MappingOptions::Mode mode) {
+  return mode == MappingOptions::Mode::kKeyframe ? "keyframe" : "frame_to_frame";
+}
+
+KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_height,
+                                 const MappingOptions& options,
+                                 const ScaleEstimatorOptions& selection,
+                                 int max_frames_before_scale)
+    : camera_(camera),
+      camera_height_(camera_height),
+      options_(options),
+      max_frames_before_scale_(max_frames_before_scale),
+      selection_(camera,
+                 SelectionOptions(selection, camera_height, options.road_min_points_per_pair)) {
+  camera_.Check();
+  options_.Check();
+}
+
+Rigid3d KeyframeBackend::PredictPose(const TwoViewMotion& motion) const {
+  Rigid3d step = last_step_;
+  const double length = last_step_.translation().norm();
+  switch (motion.status) {
+    case MotionStatus::kStationary:
+    case MotionStatus::kFirstFrame:
+      step = Rigid3d::Identity();
+      break;
+    case MotionStatus::kOk:
+      step = MakeRigid3d(motion.rotation, motion.direction * (length > 0.0 ? length : 1.0));
+      break;
+    case MotionStatus::kPureRotation:
+      step = MakeRigid3d(motion.rotation, last_step_.translation());
+      break;
+    default:
+      break;
+  }
+  return step * last_cam_from_world_;
+}
+
+bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const {
+  const Keyframe& first = window_.keyframes().front();
+  std::vector<Correspondence> correspondences;
+  for (const TrackObservation& observation : frontend.observations) {
+    const auto seen = first.observations.find(observation.track_id);
+    if (seen != first.observations.end()) {
+      correspondences.push_back({observation.track_id, seen->second, observation.pixel});
+    }
+  }
+  TwoViewMotionOptions motion_options;
+  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, motion_options);
+  if (motion.status != MotionStatus::kOk) return false;
+  const double predicted = (Centre(*cam_from_world) - Centre(first.cam_from_world)).norm();
+  *cam_from_world = motion.CurFromPrev(predicted > 0.0 ? predicted : 1.0) * first.cam_from_world;
+  return true;
+}
+
+std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend,
+                                                   const cv::Mat& road_mask) {
+  PendingFrame pending;
+  MappedFrame& mapped = pending.mapped;
+  mapped.frame_index = frontend.frame_index;
+  pending.observations = frontend.observations;
+  std::vector<MappedFrame> out;
+
+  if (!has_frame_) {
+    has_frame_ = true;
+    Keyframe keyframe;
+    keyframe.frame_index = frontend.frame_index;
+    for (const TrackObservation& o : frontend.observations)
+      keyframe.observations[o.track_id] = o.pixel;
+    keyframe.road_mask = road_mask;
+    window_.AddKeyframe(std::move(keyframe));
+    mapped.keyframe = true;
+    mapped.keyframe_reason = "first";
+    pending.keyframe_before = frontend.frame_index;
+    pending_.push_back(std::move(pending));
+    return out;
+  }
+
+  mapped.stationary = frontend.motion.status == MotionStatus::kStationary;
+  Rigid3d cam_from_world = PredictPose(frontend.motion);
+  if (!mapped.stationary) {
+    const FrameLocalization localization = LocalizeFrame(
+        frontend.observations, window_.landmarks(), camera_, cam_from_world, options_.localization);
+    mapped.landmarks_seen = localization.num_landmarks;
+    if (localization.ok) cam_from_world = localization.cam_from_world;
+  }
+
+  const Keyframe& last_keyframe = window_.keyframes().back();
+  const KeyframeMotion motion = MeasureKeyframeMotion(
+      last_keyframe, frontend.frame_index, frontend.observations,
+      cam_from_world.linear() * last_keyframe.cam_from_world.linear().transpose(), camera_);
+  KeyframeReason reason = SelectKeyframe(motion, mapped.stationary, options_.keyframes);
+  if (reason != KeyframeReason::kNone && window_.landmarks().empty() &&
+      !BootstrapPose(frontend, &cam_from_world)) {
+    reason = KeyframeReason::kNone;  // no two-view geometry yet: wait for more parallax
+  }
+  if (reason != KeyframeReason::kNone) {
+    mapped.keyframe = true;
+    mapped.keyframe_reason = KeyframeReasonName(reason);
+    AddKeyframe(frontend, road_mask, cam_from_world, &mapped);
+    cam_from_world = window_.keyframes().back().cam_from_world;
+  }
+
+  if (!mapped.stationary) last_step_ = cam_from_world * last_cam_from_world_.inverse();
+  last_cam_from_world_ = cam_from_world;
+  pending.keyframe_before = window_.keyframes().back().frame_index;
+  pending.keyframe_from_cam = window_.keyframes().back().cam_from_world * cam_from_world.inverse();
+  pending_.push_back(std::move(pending));
+  if (mapped.keyframe) out = SlideWindow(false);
+  return out;
+}
+
+void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
+                                  const Rigid3d& cam_from_world, MappedFrame* mapped) {
+  Keyframe keyframe;
+  keyframe.frame_index = frontend.frame_index;
+  keyframe.cam_from_world = cam_from_world;
+  for (const TrackObservation& o : frontend.observations)
+    keyframe.observations[o.track_id] = o.pixel;
+  keyframe.road_mask = road_mask;
+  keyframe.baseline_at_creation =
+      (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
+  window_.AddKeyframe(std::move(keyframe));
+  TriangulateNewLandmarks(camera_, options_.landmarks, &window_);
+  mapped->road_points = MarkRoadLandmarks(mapped);
+  if (!scaled_) ScaleMapOnFirstRoad();
+  mapped->bundle_adjustment =
+      AdjustLocalWindow(camera_, camera_height_, options_.bundle_adjustment, &window_);
+  last_scale_from_road_ = mapped->bundle_adjustment.scale_from_road;
+  if (last_scale_from_road_) scaled_ = true;
+}
+
+int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
+  const std::deque<Keyframe>& keyframes = window_.keyframes();
+  if (keyframes.size() < 2) return 0;
+  const Keyframe& prev = keyframes[keyframes.size() - 2];
+  const Keyframe& cur = keyframes.back();
+  std::vector<Eigen::Vector2d> prev_pixels, cur_pixels;
+  std::vector<int64_t> ids;
+  for (const auto& [id, pixel] : cur.observations) {
+    const auto seen = prev.observations.find(id);
+    if (seen == prev.observations.end()) continue;
+    prev_pixels.push_back(seen->second);
+    cur_pixels.push_back(pixel);
+    ids.push_back(id);
+  }
+  const Rigid3d cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
+  const double baseline = cur_from_prev.translation().norm();
+  if (!(baseline > 0.0)) return 0;
+  const ScaleEstimate estimate =
+      selection_.Estimate(prev_pixels, cur_pixels, cur_from_prev, prev.road_mask);
+  if (estimate.status != ScaleStatus::kOk) return 0;
+  mapped->pair_scale = camera_height_ / (estimate.plane.height * baseline);
+  int marked = 0;
+  for (int index : estimate.road_track_indices) {
+    const auto landmark = window_.landmarks().find(ids[index]);
+    if (landmark == window_.landmarks().end() || landmark->second.is_road) continue;
+    landmark->second.is_road = true;
+    landmark->second.road_anchor_frame = prev.frame_index;
+    landmark->second.road_normal_in_anchor = estimate.plane.normal;
+    ++marked;
+  }
+  return marked;
+}
+
+void KeyframeBackend::ScaleMapOnFirstRoad() {
+  if (window_.CountRoadLandmarks() < options_.bundle_adjustment.min_road_landmarks) return;
+  std::vector<double> heights;
+  for (const auto& [id, landmark] : window_.landmarks()) {
+    const Keyframe* anchor = window_.FindKeyframe(landmark.road_anchor_frame);
+    if (!landmark.is_road || anchor == nullptr) continue;
+    const double height =
+        landmark.road_normal_in_anchor.dot(anchor->cam_from_world * landmark.position);
+    if (height > 0.0) heights.push_back(height);
+  }
+  if (heights.empty()) return;
+  const auto middle = heights.begin() + static_cast<long>(heights.size() / 2);
+  std::nth_element(heights.begin(), middle, heights.end());
+  const double factor = camera_height_ / *middle;
+  window_.Rescale(factor);
+  for (PendingFrame& frame : pending_) {
+    frame.keyframe_from_cam.translation() *= factor;
+  }
+  last_step_.translation() *= factor;
+  last_cam_from_world_ = window_.keyframes().back().cam_from_world;
+}
+
+MappedFrame::Scale KeyframeBackend::CurrentScale() const {
+  if (!scaled_) return MappedFrame::Scale::kNone;
+  return last_scale_from_road_ ? MappedFrame::Scale::kRoad : MappedFrame::Scale::kCarried;
+}
+
+std::vector<MappedFrame> KeyframeBackend::SlideWindow(bool final) {
+  std::vector<MappedFrame> out;
+  const bool waited_enough = max_frames_before_scale_ <= 0 ||
+                             static_cast<int>(pending_.size()) >= max_frames_before_scale_;
+  if (!final && !scaled_ && !waited_enough) return out;
+  while (window_.keyframes().size() > static_cast<size_t>(options_.window_size)) {
+    Release(window_.keyframes()[1].frame_index, &out);
+    window_.RemoveOldestKeyframe();
+  }
+  return out;
+}
+
+void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
+  while (!pending_.empty() && pending_.front().mapped.frame_index <= last_frame) {
+    PendingFrame& frame = pending_.front();
+    MappedFrame mapped = frame.mapped;
+    mapped.scale = CurrentScale();
+    const Keyframe* own = window_.FindKeyframe(mapped.frame_index);
+    const Keyframe* before = window_.FindKeyframe(frame.keyframe_before);
+    if (!has_output_ || own != nullptr) {
+      const Rigid3d& pose = own != nullptr ? own->cam_from_world : Rigid3d::Identity();
+      mapped.world_from_cam = pose.inverse();
+      mapped.localization = "keyframe";
+    } else if (mapped.stationary) {
+      mapped.world_from_cam = last_output_world_from_cam_;
+      mapped.localization = "stationary";
+    } else {
+      // The arrival pose relative to its keyframe, in the scale of the interval then.
+      Rigid3d keyframe_from_cam = frame.keyframe_from_cam;
+      Rigid3d guess = last_output_world_from_cam_.inverse();
+      if (before != nullptr) {
+        const auto next =
+            std::find_if(window_.keyframes().begin(), window_.keyframes().end(),
+                         [&](const Keyframe& k) { return k.frame_index > before->frame_index; });
+        if (next != window_.keyframes().end() && next->baseline_at_creation > 0.0) {
+          keyframe_from_cam.translation() *=
+              (Centre(next->cam_from_world) - Centre(before->cam_from_world)).norm() /
+              next->baseline_at_creation;
+        }
+        guess = (before->cam_from_world.inverse() * keyframe_from_cam).inverse();
+      }
+      const FrameLocalization localization = LocalizeFrame(frame.observations, window_.landmarks(),
+                                                           camera_, guess, options_.localization);
+      mapped.world_from_cam = (localization.ok ? localization.cam_from_world : guess).inverse();
+      mapped.localization = localization.ok ? "map" : "interpolated";
+    }
+    has_output_ = true;
+    last_output_world_from_cam_ = mapped.world_from_cam;
+    out->push_back(std::move(mapped));
+    pending_.pop_front();
+  }
+}
+
+std::vector<MappedFrame> KeyframeBackend::Finish() {
+  std::vector<MappedFrame> out = SlideWindow(true);
+  Release(pending_.empty() ? 0 : pending_.back().mapped.frame_index, &out);
+  return out;
+}
+
+}  // namespace roadscale

@@ -1,0 +1,133 @@
+#pragma once
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "roadscale/frontend/mono_frontend.h"
+#include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/mapping/frame_localizer.h"
+#include "roadscale/mapping/keyframe_selector.h"
+#include "roadscale/mapping/landmark_triangulator.h"
+#include "roadscale/mapping/local_bundle_adjuster.h"
+#include "roadscale/mapping/local_window.h"
+#include "roadscale/scale/scale_estimator.h"
+
+namespace roadscale {
+
+struct MappingOptions {
+  // keyframe: this back end (the default). frame_to_frame: the paper's MonoVO host, each
+  // step's length from its own frame pair's road plane and the mixed filter (the ablation).
+  enum class Mode { kKeyframe, kFrameToFrame };
+  Mode mode = Mode::kKeyframe;
+  // Keyframes in the bundle-adjusted window. A frame's pose is written when its keyframe
+  // interval leaves the window, adjusted window_size - 1 times by then.
+  int window_size = 10;
+  // The road selection of a keyframe pair may pass on fewer points than the per-pair scale's
+  // RANSAC minimum (Scale.ransac_min_points): no single pair decides the scale here, the
+  // window's road landmarks together do (min_road_landmarks). 6 still lets RANSAC tell a
+  // plane from a few stray points.
+  int road_min_points_per_pair = 6;
+  KeyframeSelectorOptions keyframes;
+  LandmarkTriangulatorOptions landmarks;
+  FrameLocalizerOptions localization;
+  LocalBundleAdjusterOptions bundle_adjustment;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+// "keyframe" or "frame_to_frame".
+std::string MappingModeName(MappingOptions::Mode mode);
+
+// One frame's final pose and how it came about.
+struct MappedFrame {
+  int frame_index = 0;
+  Rigid3d world_from_cam = Rigid3d::Identity();
+  bool keyframe = false;
+  bool stationary = false;
+  // The map's scale when the pose was written: from the road landmarks of the window
+  // (scaled), carried by the map from earlier road landmarks (held), or none yet (unscaled).
+  enum class Scale { kRoad, kCarried, kNone } scale = Scale::kNone;
+  // How the pose was found when the frame was written: "keyframe" (bundle adjusted), "map"
+  // (localised against the final landmarks), "interpolated" (its arrival pose relative to
+  // the keyframe before it, rescaled with that interval), "stationary" (the previous pose).
+  std::string localization;
+  int landmarks_seen = 0;  // landmarks visible when the frame arrived
+  std::string keyframe_reason = "none";
+  int road_points = 0;      // keyframes: road landmarks the pair selection marked
+  double pair_scale = 0.0;  // keyframes: h0 / h of the pair's plane, metres per map unit
+  BundleAdjustmentReport bundle_adjustment;  // keyframes: the adjustment it started
+};
+
+// The back end's columns of OUT/frames.csv, and one frame's values for them.
+std::string MappedFrameCsvHeader();
+std::string FormatMappedFrameCsv(const MappedFrame& frame);
+
+// The keyframe back end (mapping/): keyframes by parallax, landmarks from several keyframes,
+// every frame localised against them, a sliding-window bundle adjustment with the road's
+// camera-height term, which makes the map metric. Frames come in order; their final poses
+// come out in order, a window later. One instance serves one sequence from one thread.
+class KeyframeBackend {
+ public:
+  // `camera_height` is h0; `selection` the paper's road selection (its RANSAC minimum is
+  // replaced by options.road_min_points_per_pair); `max_frames_before_scale`: frames kept
+  // waiting for the map's first scale before the window slides without one (0: never wait).
+  // Throws Error on invalid options or camera.
+  KeyframeBackend(const PinholeCamera& camera, double camera_height, const MappingOptions& options,
+                  const ScaleEstimatorOptions& selection, int max_frames_before_scale);
+
+  // Takes the frontend's result for the next frame and its road mask (empty: none). Returns
+  // the frames whose poses became final, in order.
+  std::vector<MappedFrame> AddFrame(const FrontendFrame& frontend, const cv::Mat& road_mask);
+  // Returns every frame still waiting (call after the last frame).
+  std::vector<MappedFrame> Finish();
+
+  // Frames taken and not returned yet.
+  size_t num_waiting() const { return pending_.size(); }
+  const LocalWindow& window() const { return window_; }
+
+ private:
+  struct PendingFrame {
+    MappedFrame mapped;
+    std::vector<TrackObservation> observations;
+    int keyframe_before = 0;  // frame index of the last keyframe at arrival (itself if one)
+    Rigid3d keyframe_from_cam = Rigid3d::Identity();  // at arrival
+  };
+
+  Rigid3d PredictPose(const TwoViewMotion& motion) const;
+  // The first keyframe pair has no map to localise against: its relative pose is the two
+  // frames' own two-view motion, at the predicted distance. False when that fails.
+  bool BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const;
+  void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
+                   const Rigid3d& cam_from_world, MappedFrame* mapped);
+  // Marks the landmarks the paper's selection finds on the road between the last two
+  // keyframes; returns how many.
+  int MarkRoadLandmarks(MappedFrame* mapped);
+  // Gives an unscaled map the road's scale in one step before its first adjustment with it:
+  // the adjustment alone would need many iterations for so large a change.
+  void ScaleMapOnFirstRoad();
+  std::vector<MappedFrame> SlideWindow(bool final);
+  // Writes the waiting frames up to and including `last_frame`.
+  void Release(int last_frame, std::vector<MappedFrame>* out);
+  MappedFrame::Scale CurrentScale() const;
+
+  PinholeCamera camera_;
+  double camera_height_;
+  MappingOptions options_;
+  int max_frames_before_scale_;
+  ScaleEstimator selection_;
+  LocalWindow window_;
+  std::deque<PendingFrame> pending_;
+  Rigid3d last_cam_from_world_ = Rigid3d::Identity();
+  Rigid3d last_step_ = Rigid3d::Identity();  // cur_from_prev of the last moving frame
+  bool has_frame_ = false;
+  bool scaled_ = false;                // the road has scaled the map at least once
+  bool last_scale_from_road_ = false;  // ... in the last adjustment
+  bool has_output_ = false;
+  Rigid3d last_output_world_from_cam_ = Rigid3d::Identity();
+};
+
+}  // namespace roadscale

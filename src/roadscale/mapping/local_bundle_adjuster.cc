@@ -1,0 +1,145 @@
+#include "roadscale/mapping/local_bundle_adjuster.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
+
+#include <ceres/loss_function.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include "roadscale/mapping/camera_height_residual.h"
+#include "roadscale/mapping/pose_parameters.h"
+#include "roadscale/mapping/reprojection_residual.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+double ReprojectionError(const PinholeCamera& camera, const Rigid3d& cam_from_world,
+                         const Eigen::Vector3d& point_world, const Eigen::Vector2d& observed) {
+  const Eigen::Vector3d point_cam = cam_from_world * point_world;
+  if (point_cam.z() <= 1e-6) return std::numeric_limits<double>::infinity();
+  return (camera.Project(point_cam) - observed).norm();
+}
+
+}  // namespace
+
+void LocalBundleAdjusterOptions::Check() const {
+  CheckOption(max_iterations >= 1, "mapping.ba_max_iterations", "must be >= 1");
+  CheckOption(reprojection_loss_px > 0.0, "mapping.ba_reprojection_loss_px", "must be > 0");
+  CheckOption(max_reprojection_error_px > 0.0, "mapping.ba_max_reprojection_error_px",
+              "must be > 0");
+  CheckOption(camera_height_sigma_m > 0.0 && std::isfinite(camera_height_sigma_m),
+              "mapping.camera_height_sigma_m", "must be a positive number of metres");
+  CheckOption(camera_height_loss > 0.0, "mapping.camera_height_loss", "must be > 0");
+  CheckOption(min_road_landmarks >= 3, "mapping.min_road_landmarks",
+              "must be >= 3 (a plane needs three points)");
+  CheckOption(road_outlier_sigmas > 0.0, "mapping.road_outlier_sigmas", "must be > 0");
+}
+
+BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double camera_height,
+                                         const LocalBundleAdjusterOptions& options,
+                                         LocalWindow* window) {
+  const auto start = std::chrono::steady_clock::now();
+  BundleAdjustmentReport report;
+  std::deque<Keyframe>& keyframes = window->keyframes();
+  std::map<int64_t, Landmark>& landmarks = window->landmarks();
+  report.num_keyframes = static_cast<int>(keyframes.size());
+  report.num_landmarks = static_cast<int>(landmarks.size());
+  report.num_road_landmarks = window->CountRoadLandmarks();
+  if (keyframes.size() < 2 || landmarks.empty()) return report;
+  report.scale_from_road = report.num_road_landmarks >= options.min_road_landmarks;
+
+  std::vector<PoseParameters> poses;
+  poses.reserve(keyframes.size());
+  std::map<int, size_t> pose_of_frame;
+  for (const Keyframe& keyframe : keyframes) {
+    pose_of_frame[keyframe.frame_index] = poses.size();
+    poses.push_back(ToPoseParameters(keyframe.cam_from_world));
+  }
+  std::map<int64_t, Eigen::Vector3d> points;
+  for (const auto& [id, landmark] : landmarks) points[id] = landmark.position;
+
+  // One loss object per kind, shared by its residuals and owned here, not by the problem.
+  ceres::HuberLoss reprojection_loss(options.reprojection_loss_px);
+  ceres::HuberLoss height_loss(options.camera_height_loss);
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    for (const auto& [id, pixel] : keyframes[k].observations) {
+      const auto point = points.find(id);
+      if (point == points.end()) continue;
+      problem.AddResidualBlock(ReprojectionResidual::Create(camera, pixel), &reprojection_loss,
+                               poses[k].data(), point->second.data());
+    }
+  }
+  for (const auto& [id, landmark] : landmarks) {
+    if (!landmark.is_road) continue;
+    const auto anchor = pose_of_frame.find(landmark.road_anchor_frame);
+    if (anchor == pose_of_frame.end()) continue;
+    problem.AddResidualBlock(
+        CameraHeightResidual::Create(landmark.road_normal_in_anchor, camera_height,
+                                     options.camera_height_sigma_m),
+        &height_loss, poses[anchor->second].data(), points[id].data());
+  }
+  for (size_t k = 0; k < poses.size(); ++k) {
+    if (!problem.HasParameterBlock(poses[k].data())) continue;
+    if (k == 0 || (k == 1 && !report.scale_from_road)) {
+      problem.SetParameterBlockConstant(poses[k].data());
+    }
+  }
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_SCHUR;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.num_threads = 1;  // deterministic, and the pipeline owns the threads
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  report.ran = true;
+  report.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report.initial_cost = summary.initial_cost;
+  report.final_cost = summary.final_cost;
+
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    keyframes[k].cam_from_world = FromPoseParameters(poses[k]);
+  }
+  for (auto& [id, landmark] : landmarks) landmark.position = points[id];
+
+  for (Keyframe& keyframe : keyframes) {
+    std::vector<int64_t> rejected;
+    for (const auto& [id, pixel] : keyframe.observations) {
+      const auto landmark = landmarks.find(id);
+      if (landmark == landmarks.end()) continue;
+      if (ReprojectionError(camera, keyframe.cam_from_world, landmark->second.position, pixel) >
+          options.max_reprojection_error_px) {
+        rejected.push_back(id);
+      }
+    }
+    for (int64_t id : rejected) window->RemoveObservation(&keyframe, id);
+    report.removed_observations += static_cast<int>(rejected.size());
+  }
+  if (report.scale_from_road) {
+    const double max_offset = options.road_outlier_sigmas * options.camera_height_sigma_m;
+    for (auto& [id, landmark] : landmarks) {
+      if (!landmark.is_road) continue;
+      const Keyframe* anchor = window->FindKeyframe(landmark.road_anchor_frame);
+      if (anchor == nullptr) continue;
+      const double height =
+          landmark.road_normal_in_anchor.dot(anchor->cam_from_world * landmark.position);
+      if (std::abs(height - camera_height) > max_offset) {
+        landmark.is_road = false;
+        ++report.removed_road_marks;
+      }
+    }
+  }
+  report.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace roadscale

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/mapping/local_window.h"
+
+namespace roadscale {
+
+struct LocalBundleAdjusterOptions {
+  // Levenberg-Marquardt iterations per keyframe. The window starts near its optimum (one new
+  // keyframe, localised against the map), so a few do; a bound keeps the time per keyframe
+  // bounded too.
+  int max_iterations = 10;
+  // Huber scale of the reprojection errors (pixels): KLT tracks are accurate to a few tenths.
+  double reprojection_loss_px = 1.0;
+  // After the solve, observations whose error exceeds this (pixels) are removed, and
+  // landmarks left with fewer than two observations.
+  double max_reprojection_error_px = 3.0;
+  // Road term (camera_height_residual.h): sigma of a road point's height about the plane
+  // (metres) and its Huber scale in sigmas.
+  double camera_height_sigma_m = 0.05;
+  double camera_height_loss = 1.0;
+  // With at least this many road landmarks in the window the road decides the window's scale
+  // (only the oldest keyframe is fixed); with fewer, the two oldest keyframes are fixed and
+  // the scale is the one the map carries. A dozen points is the plane RANSAC's minimum
+  // (ransac_min_points); twice that averages their noise.
+  int min_road_landmarks = 24;
+  // After a solve that set the scale, road marks whose height is off by more than this many
+  // sigmas are dropped (a kerb or a car's bottom that the selection let through).
+  double road_outlier_sigmas = 4.0;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+struct BundleAdjustmentReport {
+  bool ran = false;
+  bool scale_from_road = false;  // the road landmarks set the scale (see min_road_landmarks)
+  int iterations = 0;
+  double initial_cost = 0.0;  // Ceres' cost (half the sum of squared robust residuals)
+  double final_cost = 0.0;
+  int num_keyframes = 0;
+  int num_landmarks = 0;
+  int num_road_landmarks = 0;
+  int removed_observations = 0;
+  int removed_road_marks = 0;
+  double milliseconds = 0.0;
+};
+
+// Bundle adjustment of the window: keyframe poses and landmarks by their reprojection errors
+// (Huber) and the road landmarks' heights (the camera-height term). The oldest keyframe is
+// fixed (the gauge: position and orientation), and with too few road landmarks the second
+// oldest too (the scale). Removes the observations and road marks it finds wrong.
+// `camera_height` is h0 in metres.
+BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double camera_height,
+                                         const LocalBundleAdjusterOptions& options,
+                                         LocalWindow* window);
+
+}  // namespace roadscale

@@ -1,0 +1,168 @@
+#include "roadscale/mapping/local_bundle_adjuster.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "roadscale/mapping/mapping_test_scene.h"
+
+namespace roadscale {
+namespace {
+
+Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
+  return cam_from_world.inverse().translation();
+}
+
+// Pixel noise on every observation, and a share of the observations replaced by wrong
+// pixels (tracks that slipped).
+void Corrupt(LocalWindow* window, double noise_px, double outlier_share, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, noise_px);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (Keyframe& keyframe : window->keyframes()) {
+    for (auto& [id, pixel] : keyframe.observations) {
+      if (unit(rng) < outlier_share) {
+        pixel += Eigen::Vector2d(20.0 + 30.0 * unit(rng), -20.0 - 30.0 * unit(rng));
+      } else {
+        pixel += Eigen::Vector2d(noise(rng), noise(rng));
+      }
+    }
+  }
+}
+
+// Moves the keyframes from `first_moved` on by up to `pose_noise` metres and 0.3 deg, and
+// every landmark by up to 3 % of its depth.
+void Perturb(LocalWindow* window, size_t first_moved, double pose_noise, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (size_t k = first_moved; k < window->keyframes().size(); ++k) {
+    Rigid3d& pose = window->keyframes()[k].cam_from_world;
+    const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    pose = MakeRigid3d(Eigen::AngleAxisd(0.3 * M_PI / 180.0, axis).toRotationMatrix(),
+                       pose_noise * Eigen::Vector3d(unit(rng), unit(rng), unit(rng))) *
+           pose;
+  }
+  for (auto& [id, landmark] : window->landmarks()) {
+    landmark.position *= 1.0 + 0.03 * unit(rng);
+  }
+}
+
+double MaxCentreError(const LocalWindow& window, const testing::MappingTestScene& scene) {
+  double worst = 0.0;
+  for (const Keyframe& keyframe : window.keyframes()) {
+    worst = std::max(worst, (Centre(keyframe.cam_from_world) -
+                             Centre(scene.cam_from_world[keyframe.frame_index]))
+                                .norm());
+  }
+  return worst;
+}
+
+TEST(LocalBundleAdjuster, RecoversPosesAndLandmarksFromNoiseAndOutliers) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  for (auto& [id, landmark] : window.landmarks()) landmark.is_road = false;  // reprojection only
+  Corrupt(&window, 0.3, 0.1, 1);
+  Perturb(&window, 2, 0.3, 2);  // the two oldest keyframes hold the gauge and the scale
+  ASSERT_GT(MaxCentreError(window, scene), 0.1);
+
+  LocalBundleAdjusterOptions options;
+  options.max_iterations = 50;
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  EXPECT_TRUE(report.ran);
+  EXPECT_FALSE(report.scale_from_road);
+  EXPECT_LT(report.final_cost, report.initial_cost);  // the outliers keep most of it
+  // The two oldest keyframes hold the gauge and the scale (no road landmarks).
+  EXPECT_LT(MaxCentreError(window, scene), 0.03);
+  for (const Keyframe& keyframe : window.keyframes()) {
+    const Eigen::Matrix3d error = keyframe.cam_from_world.linear() *
+                                  scene.cam_from_world[keyframe.frame_index].linear().transpose();
+    EXPECT_LT(RotationAngle(error) * 180.0 / M_PI, 0.02);
+  }
+  // Most outliers removed, few good observations lost.
+  EXPECT_GT(report.removed_observations, 0);
+  int near_points = 0, accurate = 0;
+  for (const auto& [id, landmark] : window.landmarks()) {
+    const double depth = (scene.cam_from_world[0] * scene.points[id]).z();
+    if (depth > 20.0) continue;
+    ++near_points;
+    if ((landmark.position - scene.points[id]).norm() < 0.01 * depth) ++accurate;
+  }
+  EXPECT_GT(accurate, 0.95 * near_points);
+}
+
+TEST(LocalBundleAdjuster, TheGaugeFollowsTheOldestKeyframe) {
+  // The same window moved and turned as a whole: the adjustment gives the same window,
+  // moved and turned the same way - nothing but the oldest keyframe anchors it.
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = testing::ExactWindow(scene, 8, 3);
+  Corrupt(&window, 0.3, 0.0, 3);
+  Perturb(&window, 1, 0.2, 4);
+  LocalWindow moved = window;
+  const Rigid3d world2_from_world = MakeRigid3d(
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.2, 1.0, 0.1).normalized()).toRotationMatrix(),
+      Eigen::Vector3d(15.0, -2.0, 40.0));
+  for (Keyframe& keyframe : moved.keyframes()) {
+    keyframe.cam_from_world = keyframe.cam_from_world * world2_from_world.inverse();
+  }
+  for (auto& [id, landmark] : moved.landmarks())
+    landmark.position = world2_from_world * landmark.position;
+
+  AdjustLocalWindow(scene.camera, 1.65, {}, &window);
+  AdjustLocalWindow(scene.camera, 1.65, {}, &moved);
+  ASSERT_EQ(window.keyframes().size(), moved.keyframes().size());
+  for (size_t k = 0; k < window.keyframes().size(); ++k) {
+    const Rigid3d expected = window.keyframes()[k].cam_from_world * world2_from_world.inverse();
+    EXPECT_LT((moved.keyframes()[k].cam_from_world.matrix() - expected.matrix()).norm(), 1e-5);
+  }
+  // The oldest keyframe did not move.
+  EXPECT_LT(
+      (Centre(window.keyframes().front().cam_from_world) - Centre(scene.cam_from_world[0])).norm(),
+      1e-12);
+}
+
+class LocalBundleAdjusterScale : public ::testing::TestWithParam<double> {};
+
+TEST_P(LocalBundleAdjusterScale, TheCameraHeightTermMakesAWrongScaleMetric) {
+  const double wrong_scale = GetParam();
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  Corrupt(&window, 0.3, 0.05, 5);
+  window.Rescale(wrong_scale);
+  ASSERT_GE(window.CountRoadLandmarks(), 100);
+
+  LocalBundleAdjusterOptions options;
+  options.max_iterations = 100;
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  EXPECT_TRUE(report.scale_from_road);
+  const double true_length =
+      (Centre(scene.cam_from_world[27]) - Centre(scene.cam_from_world[0])).norm();
+  const double length = (Centre(window.keyframes().back().cam_from_world) -
+                         Centre(window.keyframes().front().cam_from_world))
+                            .norm();
+  EXPECT_NEAR(length / true_length, 1.0, 0.005) << "started at " << wrong_scale << "x";
+  EXPECT_LT(MaxCentreError(window, scene), 0.1);
+}
+
+INSTANTIATE_TEST_SUITE_P(TwiceAndHalf, LocalBundleAdjusterScale, ::testing::Values(2.0, 0.5));
+
+TEST(LocalBundleAdjuster, FewRoadLandmarksLeaveTheScaleToTheMap) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  int kept = 0;
+  for (auto& [id, landmark] : window.landmarks()) {
+    if (landmark.is_road && ++kept > 10) landmark.is_road = false;
+  }
+  window.Rescale(1.2);
+  LocalBundleAdjusterOptions options;
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  EXPECT_FALSE(report.scale_from_road);
+  const double length = (Centre(window.keyframes().back().cam_from_world) -
+                         Centre(window.keyframes().front().cam_from_world))
+                            .norm();
+  const double true_length =
+      (Centre(scene.cam_from_world[27]) - Centre(scene.cam_from_world[0])).norm();
+  EXPECT_NEAR(length / true_length, 1.2, 0.01);
+}
+
+}  // namespace
+}  // namespace roadscale
