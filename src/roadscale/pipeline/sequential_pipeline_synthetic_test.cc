@@ -30,6 +30,13 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
+// The frame-to-frame host, whose steps are the scale sources' lengths.
+PipelineOptions FrameToFrame() {
+  PipelineOptions options;
+  options.mapping.mode = MappingOptions::Mode::kFrameToFrame;
+  return options;
+}
+
 // Renders `frames` frames of the urban preset into `dir`; the options that open them.
 FrameSourceOptions RenderUrbanStreet(int frames, const testing::TempDir& dir) {
   synth::SyntheticScene scene(synth::PresetSceneOptions("urban"), frames);
@@ -52,7 +59,7 @@ TEST(SequentialPipelineSynthetic, OracleScaleFollowsTheTrueMotionOfAnUrbanScene)
   const Trajectory gt = *source->ground_truth();
   OracleScaleSource oracle(gt);
   const std::string out = dir.File("run");
-  const RunSummary summary = RunSequentialPipeline(*source, oracle, {}, out);
+  const RunSummary summary = RunSequentialPipeline(*source, oracle, FrameToFrame(), out);
   EXPECT_EQ(summary.frames, static_cast<size_t>(kFrames));
   EXPECT_EQ(summary.motion_frames, static_cast<size_t>(kFrames - 1));
 
@@ -130,7 +137,7 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
     const auto source = OpenFrameSource(source_options);
     LateOracle late(gt, kFirstScaled);
     const std::string out = dir.File("backfilled");
-    RunSequentialPipeline(*source, late, {}, out);
+    RunSequentialPipeline(*source, late, FrameToFrame(), out);
     const std::vector<std::string> status = StatusColumn(out + "/frames.csv");
     const Trajectory est = ReadKittiTrajectory(out + "/poses_kitti.txt");
     ASSERT_EQ(status.size(), static_cast<size_t>(kFrames));
@@ -158,7 +165,7 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
   {
     const auto source = OpenFrameSource(source_options);
     LateOracle late(gt, kFirstScaled);
-    PipelineOptions options;
+    PipelineOptions options = FrameToFrame();
     options.max_frames_before_first_scale = 3;
     const std::string out = dir.File("unscaled");
     RunSequentialPipeline(*source, late, options, out);
@@ -211,6 +218,7 @@ TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) 
   const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
   const std::string labels = source_options.input + "/semantic";
 
+  PipelineOptions options;
   const auto run = [&](int threads, int failing_frame, const std::string& out) {
     const auto source = OpenFrameSource(source_options);
     std::vector<std::unique_ptr<UnevenSegmenter>> owned;
@@ -220,8 +228,22 @@ TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) 
       segmenters.push_back(owned.back().get());
     }
     RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
-    return RunPipeline(*source, segmenters, road, {}, out);
+    return RunPipeline(*source, segmenters, road, options, out);
   };
+  // The keyframe back end (the default) writes the same poses with one thread as with three;
+  // a failing frame still leaves every frame before it written.
+  run(1, -1, dir.File("keyframe_one"));
+  run(3, -1, dir.File("keyframe_three"));
+  const std::string keyframe_one = FileText(dir.File("keyframe_one") + "/poses_kitti.txt");
+  ASSERT_EQ(std::count(keyframe_one.begin(), keyframe_one.end(), '\n'), kFrames);
+  EXPECT_EQ(FileText(dir.File("keyframe_three") + "/poses_kitti.txt"), keyframe_one);
+  EXPECT_THROW(run(3, 9, dir.File("keyframe_failed")), Error);
+  const std::string keyframe_failed = FileText(dir.File("keyframe_failed") + "/poses_kitti.txt");
+  EXPECT_EQ(std::count(keyframe_failed.begin(), keyframe_failed.end(), '\n'), 9);
+
+  // The frame-to-frame host writes each frame once it is processed: a failed run's rows are
+  // the complete run's first rows.
+  options = FrameToFrame();
   run(1, -1, dir.File("one"));
   run(3, -1, dir.File("three"));
   const std::string one = FileText(dir.File("one") + "/poses_kitti.txt");
