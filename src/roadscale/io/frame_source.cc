@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/util/error.h"
 
@@ -249,8 +250,7 @@ void FrameSourceOptions::Check() const {
   CheckOption(!input.empty(), "input", "a KITTI sequence folder, image folder or video is needed");
   CheckOption(kitti_camera >= -1 && kitti_camera <= 3, "kitti_camera",
               "must be 0..3 (image_N with P_N) or -1 (image_0 when present, else image_2)");
-  CheckOption(!h0 || (std::isfinite(*h0) && *h0 > 0.0), "h0",
-              "the camera height above the road must be a positive number of metres");
+  if (h0) CheckCameraHeight(*h0, "h0");
   CheckOption(frames.begin < frames.end, "frames", "the range is empty");
 }
 
