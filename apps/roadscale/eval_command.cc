@@ -96,7 +96,7 @@ void RegisterEvalCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "eval",
       "Evaluate an estimated trajectory against ground truth: the KITTI odometry benchmark's "
-      "t_err/r_err (computed as its devkit does, in single precision), ATE (none/se3/sim3), "
+      "t_err/r_err (computed as its devkit does), ATE (none/se3/sim3), "
       "per-frame RPE, path-length ratio and final drift. Pose i is compared with pose i "
       "(same count needed) unless both trajectories have timestamps (a TUM file, or KITTI "
       "poses with --times): then they are associated by time, as evo does.");

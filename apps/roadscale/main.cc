@@ -1,9 +1,37 @@
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "roadscale/util/error.h"
 
 #include "commands.h"
+
+namespace {
+
+// The subcommands as registered (CLI11's overloads need the filter's type spelled out).
+std::vector<const CLI::App*> Subcommands(const CLI::App& app) {
+  return app.get_subcommands(std::function<bool(const CLI::App*)>());
+}
+
+bool IsSubcommand(const CLI::App& app, const std::string& word) {
+  for (const CLI::App* command : Subcommands(app)) {
+    if (command->check_name(word)) return true;
+  }
+  return false;
+}
+
+// "demo, eval, ..." for the message about an unknown subcommand.
+std::string SubcommandNames(const CLI::App& app) {
+  std::string names;
+  for (const CLI::App* command : Subcommands(app)) {
+    names += (names.empty() ? "" : ", ") + command->get_name();
+  }
+  return names;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -18,10 +46,20 @@ int main(int argc, char** argv) {
   roadscale::cli::RegisterSegmentCommand(app);
   roadscale::cli::RegisterSynthCommand(app);
 
+  // CLI11 would take an unknown word for a stray argument and say "A subcommand is required".
+  if (argc > 1 && argv[1][0] != '-' && !IsSubcommand(app, argv[1])) {
+    std::cerr << "roadscale: error: unknown subcommand '" << argv[1] << "' (expected one of "
+              << SubcommandNames(app) << ")\n";
+    return 1;
+  }
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // One line and status 1, as for every other error (CLI11's own exit codes are 100+).
+    std::cerr << "roadscale: error: " << e.what() << " (see roadscale --help)\n";
+    return 1;
   } catch (const roadscale::Error& e) {
     std::cerr << "roadscale: error: " << e.what() << '\n';
     return 1;

@@ -24,6 +24,8 @@
 #include "roadscale/util/error.h"
 
 #include "commands.h"
+#include "interrupt.h"
+#include "output_folder.h"
 
 namespace roadscale::cli {
 namespace {
@@ -47,28 +49,12 @@ struct RescaleArguments {
   std::string out;
 };
 
-// The format from --format, else from the file: a TUM row has 8 numbers, a KITTI row 12.
-TrajectoryFormat ResolveFormat(const RescaleArguments& arguments) {
-  if (!arguments.format.empty()) return ParseTrajectoryFormat(arguments.format);
-  std::ifstream file(arguments.trajectory);
-  if (!file) ThrowFileError(arguments.trajectory, "cannot open the trajectory file");
-  std::string line;
-  int line_number = 0;
-  while (std::getline(file, line)) {
-    ++line_number;
-    std::istringstream fields(line);
-    std::string first;
-    if (!(fields >> first) || first[0] == '#') continue;
-    int count = 1;
-    std::string field;
-    while (fields >> field) ++count;
-    if (count == 8) return TrajectoryFormat::kTum;
-    if (count == 12) return TrajectoryFormat::kKitti;
-    ThrowFileError(arguments.trajectory, line_number,
-                   "cannot tell the format from a row of " + std::to_string(count) +
-                       " numbers (KITTI: 12, TUM: 8); give --format kitti|tum");
-  }
-  ThrowFileError(arguments.trajectory, "no poses in the file");
+// The trajectory, read once (a pipe works): in --format's format, else in the one its first
+// row has (KITTI: 12 numbers, TUM: 8).
+Trajectory ReadExternalTrajectory(const RescaleArguments& arguments, TrajectoryFormat* format) {
+  if (arguments.format.empty()) return ReadTrajectoryOfEitherFormat(arguments.trajectory, format);
+  *format = ParseTrajectoryFormat(arguments.format);
+  return ReadTrajectory(arguments.trajectory, *format);
 }
 
 std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
@@ -116,6 +102,12 @@ std::ofstream OpenOutput(const std::string& path) {
   return file;
 }
 
+// One row, flushed at once so that the rows stay intact whatever stops the run.
+void WriteRow(std::ofstream& file, const fs::path& path, const std::string& row) {
+  file << row << '\n' << std::flush;
+  if (!file) ThrowFileError(path.string(), "write failed (disk full or file removed?)");
+}
+
 std::string Fixed(double value, int digits) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(digits) << value;
@@ -146,8 +138,8 @@ void RunRescale(const RescaleArguments& arguments) {
   }
   options.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.refine_motion = !arguments.no_refine;
-  const TrajectoryFormat format = ResolveFormat(arguments);
-  const Trajectory external = ReadTrajectory(arguments.trajectory, format);
+  TrajectoryFormat format = TrajectoryFormat::kKitti;
+  const Trajectory external = ReadExternalTrajectory(arguments, &format);
   if (external.size() == 0) ThrowFileError(arguments.trajectory, "no poses in the file");
 
   FrameSourceOptions source_options;
@@ -182,13 +174,11 @@ void RunRescale(const RescaleArguments& arguments) {
   }
 
   const fs::path out(arguments.out);
-  std::error_code error;
-  fs::create_directories(out, error);
-  if (!fs::is_directory(out)) ThrowFileError(out.string(), "cannot create the output folder");
+  PrepareOutputFolder(arguments.out);
   std::ofstream kitti_file = OpenOutput((out / "poses_kitti.txt").string());
   std::ofstream tum_file = OpenOutput((out / "poses_tum.txt").string());
   std::ofstream csv_file = OpenOutput((out / "rescale.csv").string());
-  csv_file << RescaleCsvHeader() << '\n' << std::flush;
+  WriteRow(csv_file, out / "rescale.csv", RescaleCsvHeader());
 
   std::cout << "Input:      " << source->Describe() << '\n'
             << "Trajectory: " << arguments.trajectory << " ("
@@ -206,17 +196,24 @@ void RunRescale(const RescaleArguments& arguments) {
   Trajectory rescaled;
   std::map<RescaleStatus, int> counts;
   double total_ms = 0.0;
-  RunTrajectoryRescaler(*source, segmenter.get(), rescaler, [&](const RescaledPose& pose) {
-    kitti_file << FormatKittiRow(pose.world_from_cam) << '\n' << std::flush;
-    tum_file << FormatTumRow(pose.timestamp, pose.world_from_cam) << '\n' << std::flush;
+  const InterruptScope interrupt_scope;
+  const auto on_pose = [&](const RescaledPose& pose) {
+    WriteRow(kitti_file, out / "poses_kitti.txt", FormatKittiRow(pose.world_from_cam));
+    WriteRow(tum_file, out / "poses_tum.txt", FormatTumRow(pose.timestamp, pose.world_from_cam));
     if (pose.status != RescaleStatus::kFirst) {
-      csv_file << FormatRescaleCsv(pose) << '\n' << std::flush;
+      WriteRow(csv_file, out / "rescale.csv", FormatRescaleCsv(pose));
       ++counts[pose.status];
       total_ms += pose.total_ms;
     }
     rescaled.world_from_cam.push_back(pose.world_from_cam);
     rescaled.timestamps.push_back(pose.timestamp);
-  });
+  };
+  if (RunTrajectoryRescaler(*source, segmenter.get(), rescaler, on_pose,
+                            &InterruptScope::interrupted())) {
+    throw Error("interrupted after " + std::to_string(rescaled.size()) + " of " +
+                std::to_string(external.size()) + " poses: " + (out / "poses_kitti.txt").string() +
+                ", poses_tum.txt and rescale.csv hold those poses");
+  }
 
   const size_t steps = external.size() - 1;
   std::cout << "Steps:      " << steps << " (";
@@ -260,7 +257,8 @@ void RegisterRescaleCommand(CLI::App& app) {
       "translation directions are kept; for each pair of consecutive poses, features are tracked "
       "between their frames and the road plane gives the step's length in metres. Writes, step "
       "by step: OUT/poses_kitti.txt and OUT/poses_tum.txt (one row per input pose) and "
-      "OUT/rescale.csv (per step: frames, input and metric length, status, counts, times). "
+      "OUT/rescale.csv (per step: frames, input and metric length, status, counts, times); "
+      "Ctrl-C or SIGTERM stops after the frame in flight with those files intact and exits 1. "
       "Prints length ratio, KITTI t_err and ATE when the sequence has ground truth.");
   command
       ->add_option("--trajectory", arguments->trajectory,
@@ -314,7 +312,11 @@ void RegisterRescaleCommand(CLI::App& app) {
                       "Run config YAML whose Scale: block sets the road-plane scale's options "
                       "(config/kitti.yaml lists them; the other blocks are not used here; "
                       "default: the defaults of config/kitti.yaml)");
-  command->add_option("--out", arguments->out, "Output folder (created when missing)")->required();
+  command
+      ->add_option("--out", arguments->out,
+                   "Output folder (created when missing). It holds one run: the files a run or "
+                   "rescale writes are removed from it first, other files are left alone")
+      ->required();
   command->callback([arguments, kitti, images] {
     if (kitti->count() == 0 && images->count() == 0) {
       throw Error("roadscale rescale needs --kitti SEQ_DIR or --images DIR");

@@ -3,9 +3,7 @@
 // it runs, a report at the end.
 #include "run_command.h"
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -28,27 +26,11 @@
 #include "roadscale/util/error.h"
 
 #include "commands.h"
+#include "interrupt.h"
+#include "output_folder.h"
 
 namespace roadscale::cli {
 namespace {
-
-std::atomic<bool> g_interrupted{false};
-
-void OnInterrupt(int) { g_interrupted = true; }
-
-// Installs the Ctrl-C handler for the lifetime of a run: the first Ctrl-C stops the run after
-// the frames in flight; the previous handler comes back afterwards.
-class InterruptScope {
- public:
-  InterruptScope() {
-    g_interrupted = false;
-    previous_ = std::signal(SIGINT, OnInterrupt);
-  }
-  ~InterruptScope() { std::signal(SIGINT, previous_); }
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
 
 void Note(const std::string& text) { std::cerr << "roadscale: note: " << text << '\n'; }
 
@@ -118,11 +100,7 @@ void RunRun(const RunArguments& arguments) {
   }
   config.pipeline.Check();
 
-  std::error_code error;
-  std::filesystem::create_directories(arguments.out, error);
-  if (error || !std::filesystem::is_directory(arguments.out)) {
-    ThrowFileError(arguments.out, "cannot create the output folder");
-  }
+  PrepareOutputFolder(arguments.out);
   FrameSourceOptions source_options;
   source_options.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
                         : !arguments.images.empty() ? FrameSourceType::kImageFolder
@@ -254,7 +232,7 @@ void RunRun(const RunArguments& arguments) {
     run_options.opencv_threads = config.segmentation.dnn_threads;
     try {
       result = RunPipeline(*source, segmenters, *scale_source, config.pipeline, arguments.out,
-                           run_options, on_frame, &g_interrupted);
+                           run_options, on_frame, &InterruptScope::interrupted());
     } catch (const Error&) {
       if (progress) std::fprintf(stderr, "\n");
       throw;
@@ -318,7 +296,8 @@ void RegisterRunCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "run",
       "Run the monocular visual odometry with road-plane scale on a sequence. Writes, while it "
-      "runs (a crash or Ctrl-C leaves the frames before it intact): OUT/poses_kitti.txt (one "
+      "runs (a crash, Ctrl-C or SIGTERM leaves the frames before it intact; Ctrl-C and SIGTERM "
+      "stop after the frames in flight and exit 1): OUT/poses_kitti.txt (one "
       "world_from_cam row per input frame, the first frame is the world), OUT/poses_tum.txt "
       "(the same with timestamps), OUT/frames.csv (per frame: status, tracks, inliers, points "
       "after each scale stage, plane n and h, raw and filtered scale, ms per stage), "
@@ -357,7 +336,11 @@ void RegisterRunCommand(CLI::App& app) {
                       "sift, or the config's Frontend.detector)");
   command->add_option("--frames", arguments->frames,
                       "Frames to process: A:B (A..B-1), A: or :B (default: all)");
-  command->add_option("--out", arguments->out, "Output folder (created when missing)")->required();
+  command
+      ->add_option("--out", arguments->out,
+                   "Output folder (created when missing). It holds one run: the files a run or "
+                   "rescale writes are removed from it first, other files are left alone")
+      ->required();
   command->add_flag("--sequential", arguments->sequential,
                     "Run the stages one after the other on one thread (same output, slower; "
                     "default: segmentation, frontend and scale on their own threads)");

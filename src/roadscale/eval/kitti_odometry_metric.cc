@@ -7,47 +7,44 @@
 
 #include "roadscale/util/error.h"
 
-// This file must be compiled without fused multiply-add contraction (see CMakeLists.txt),
-// and its float arithmetic is written as plain scalar loops rather than Eigen's vectorised
-// (and, with FMA available, fused) kernels: every product and sum rounds to float on its
-// own, in a fixed order, on every platform. The devkit's path distances decide segment
-// ends, and its r_err is dominated by the float acos of cosines near 1, so both are
-// sensitive to the rounding of single operations.
+// The devkit (evaluate_odometry.cpp with its Matrix class) keeps poses, products and
+// inverses in double and rounds to float only the path distances and the per-segment errors;
+// doing any of the matrix arithmetic in float instead moves r_err by ~1e-4 relative (the
+// float acos of a cosine near 1 magnifies every rounding). This file is compiled without
+// fused multiply-add contraction (see CMakeLists.txt) and written as plain scalar loops in
+// the devkit's order rather than Eigen's vectorised kernels, so that every operation rounds
+// as the devkit's does, on every platform.
 
 namespace roadscale {
 namespace {
 
-// A 4x4 homogeneous pose in single precision, m[row][col].
-struct Pose4f {
-  float m[4][4];
+// A 4x4 homogeneous pose, m[row][col].
+struct Pose4d {
+  double m[4][4];
 };
 
-Pose4f ToFloat(const Rigid3d& pose, const char* which, size_t index) {
-  Pose4f result;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) {
-      result.m[r][c] = static_cast<float>(pose.matrix()(r, c));
-      if (!std::isfinite(result.m[r][c])) {
-        throw Error(std::string("the KITTI metric computes in single precision, and ") + which +
-                    " pose " + std::to_string(index + 1) + " has a value beyond its range");
+std::vector<Pose4d> ToPoses(const std::vector<Rigid3d>& poses, const char* which) {
+  std::vector<Pose4d> result(poses.size());
+  for (size_t i = 0; i < poses.size(); ++i) {
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        result[i].m[r][c] = poses[i].matrix()(r, c);
+        // Float holds the per-segment errors: a pose beyond its range gives inf errors.
+        if (!std::isfinite(static_cast<float>(result[i].m[r][c]))) {
+          throw Error(std::string("the KITTI metric keeps its errors in single precision, and ") +
+                      which + " pose " + std::to_string(i + 1) + " has a value beyond its range");
+        }
       }
     }
   }
   return result;
 }
 
-std::vector<Pose4f> ToFloatPoses(const std::vector<Rigid3d>& poses, const char* which) {
-  std::vector<Pose4f> result;
-  result.reserve(poses.size());
-  for (size_t i = 0; i < poses.size(); ++i) result.push_back(ToFloat(poses[i], which, i));
-  return result;
-}
-
-Pose4f Multiply(const Pose4f& a, const Pose4f& b) {
-  Pose4f c;
+Pose4d Multiply(const Pose4d& a, const Pose4d& b) {
+  Pose4d c;
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
-      float sum = 0.0f;
+      double sum = 0.0;
       for (int k = 0; k < 4; ++k) sum += a.m[i][k] * b.m[k][j];
       c.m[i][j] = sum;
     }
@@ -55,38 +52,60 @@ Pose4f Multiply(const Pose4f& a, const Pose4f& b) {
   return c;
 }
 
-// The general inverse by Gauss-Jordan elimination with partial pivoting, in float. General
-// rather than rigid (R^T, -R^T t): estimates written with few digits are not exactly rigid,
-// and the devkit inverts them as general matrices.
-Pose4f Inverse(const Pose4f& pose) {
-  Pose4f a = pose;
-  Pose4f inverse{};
-  for (int i = 0; i < 4; ++i) inverse.m[i][i] = 1.0f;
-  for (int col = 0; col < 4; ++col) {
-    int pivot = col;
-    for (int row = col + 1; row < 4; ++row) {
-      if (std::fabs(a.m[row][col]) > std::fabs(a.m[pivot][col])) pivot = row;
+// The general inverse, as the devkit computes it: Gauss-Jordan elimination with full
+// pivoting on [pose | I]. Each step takes as pivot the largest |a(r, c)| over the rows and
+// columns not pivoted yet (scanning rows, then columns, the last of equal ones), swaps row r
+// into row c, scales that row by the pivot's reciprocal and eliminates column c from every
+// other row. Pivot rows land on their column's index, so the right half is the inverse
+// without unscrambling. General rather than rigid (R^T, -R^T t): files written with few
+// digits are not exactly rigid, and the devkit inverts them as they are.
+Pose4d Inverse(const Pose4d& pose) {
+  Pose4d a = pose;
+  Pose4d inverse{};
+  for (int i = 0; i < 4; ++i) inverse.m[i][i] = 1.0;
+  bool pivoted[4] = {false, false, false, false};
+  for (int step = 0; step < 4; ++step) {
+    double largest = 0.0;
+    int pivot_row = -1;
+    int pivot_col = -1;
+    for (int r = 0; r < 4; ++r) {
+      if (pivoted[r]) continue;
+      for (int c = 0; c < 4; ++c) {
+        if (!pivoted[c] && std::fabs(a.m[r][c]) >= largest) {
+          largest = std::fabs(a.m[r][c]);
+          pivot_row = r;
+          pivot_col = c;
+        }
+      }
     }
-    std::swap(a.m[col], a.m[pivot]);
-    std::swap(inverse.m[col], inverse.m[pivot]);
-    const float diagonal = a.m[col][col];
+    // Finite poses that passed the trajectory readers' rotation check never get here.
+    if (pivot_row < 0 || !(largest > 0.0)) throw Error("the KITTI metric met a singular pose");
+    const int c = pivot_col;
+    pivoted[c] = true;
+    if (pivot_row != c) {
+      std::swap(a.m[pivot_row], a.m[c]);
+      std::swap(inverse.m[pivot_row], inverse.m[c]);
+    }
+    const double reciprocal = 1.0 / a.m[c][c];
     for (int k = 0; k < 4; ++k) {
-      a.m[col][k] /= diagonal;
-      inverse.m[col][k] /= diagonal;
+      a.m[c][k] *= reciprocal;
+      inverse.m[c][k] *= reciprocal;
     }
-    for (int row = 0; row < 4; ++row) {
-      if (row == col) continue;
-      const float factor = a.m[row][col];
+    for (int r = 0; r < 4; ++r) {
+      if (r == c) continue;
+      const double factor = a.m[r][c];
       for (int k = 0; k < 4; ++k) {
-        a.m[row][k] -= factor * a.m[col][k];
-        inverse.m[row][k] -= factor * inverse.m[col][k];
+        a.m[r][k] -= a.m[c][k] * factor;
+        inverse.m[r][k] -= inverse.m[c][k] * factor;
       }
     }
   }
   return inverse;
 }
 
-std::vector<float> PathDistances(const std::vector<Pose4f>& poses) {
+// The differences are taken in double and stored as float, the sums are float, as the
+// devkit's trajectoryDistances does.
+std::vector<float> PathDistances(const std::vector<Pose4d>& poses) {
   std::vector<float> dist;
   dist.reserve(poses.size());
   for (size_t i = 0; i < poses.size(); ++i) {
@@ -94,18 +113,19 @@ std::vector<float> PathDistances(const std::vector<Pose4f>& poses) {
       dist.push_back(0.0f);
       continue;
     }
-    const float dx = poses[i - 1].m[0][3] - poses[i].m[0][3];
-    const float dy = poses[i - 1].m[1][3] - poses[i].m[1][3];
-    const float dz = poses[i - 1].m[2][3] - poses[i].m[2][3];
+    const float dx = static_cast<float>(poses[i - 1].m[0][3] - poses[i].m[0][3]);
+    const float dy = static_cast<float>(poses[i - 1].m[1][3] - poses[i].m[1][3]);
+    const float dz = static_cast<float>(poses[i - 1].m[2][3] - poses[i].m[2][3]);
     dist.push_back(dist.back() + std::sqrt(dx * dx + dy * dy + dz * dz));
   }
   return dist;
 }
 
-float RotationErrorOf(const Pose4f& error) {
+// The error pose's diagonal rounded to float, as the devkit's rotationError reads it.
+float RotationErrorOf(const Pose4d& error) {
   Eigen::Matrix3f rotation;
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) rotation(r, c) = error.m[r][c];
+    for (int c = 0; c < 3; ++c) rotation(r, c) = static_cast<float>(error.m[r][c]);
   }
   return KittiRotationError(rotation);
 }
@@ -141,7 +161,7 @@ float KittiRotationError(const Eigen::Matrix3f& rotation) {
 }
 
 std::vector<float> KittiPathDistances(const std::vector<Rigid3d>& world_from_cam) {
-  return PathDistances(ToFloatPoses(world_from_cam, "a"));
+  return PathDistances(ToPoses(world_from_cam, "a"));
 }
 
 KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_from_cam,
@@ -155,8 +175,8 @@ KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_f
   }
   if (gt_world_from_cam.empty()) throw Error("the KITTI metric needs at least one pose");
 
-  const std::vector<Pose4f> gt = ToFloatPoses(gt_world_from_cam, "ground-truth");
-  const std::vector<Pose4f> est = ToFloatPoses(est_world_from_cam, "estimated");
+  const std::vector<Pose4d> gt = ToPoses(gt_world_from_cam, "ground-truth");
+  const std::vector<Pose4d> est = ToPoses(est_world_from_cam, "estimated");
   const std::vector<float> dist = PathDistances(gt);
   const int n = static_cast<int>(gt.size());
 
@@ -166,12 +186,12 @@ KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_f
     for (float length : options.lengths_m) {
       const int last = LastFrameOfSegment(dist, first, length);
       if (last < 0) continue;
-      const Pose4f gt_delta = Multiply(Inverse(gt[first]), gt[last]);
-      const Pose4f est_delta = Multiply(Inverse(est[first]), est[last]);
-      const Pose4f error = Multiply(Inverse(est_delta), gt_delta);
-      const float tx = error.m[0][3];
-      const float ty = error.m[1][3];
-      const float tz = error.m[2][3];
+      const Pose4d gt_delta = Multiply(Inverse(gt[first]), gt[last]);
+      const Pose4d est_delta = Multiply(Inverse(est[first]), est[last]);
+      const Pose4d error = Multiply(Inverse(est_delta), gt_delta);
+      const float tx = static_cast<float>(error.m[0][3]);
+      const float ty = static_cast<float>(error.m[1][3]);
+      const float tz = static_cast<float>(error.m[2][3]);
       KittiSegmentError segment;
       segment.first_frame = first;
       segment.last_frame = last;

@@ -17,14 +17,15 @@ namespace roadscale {
 //  - error pose E = inv(inv(Est_a) Est_b) inv(Gt_a) Gt_b; t_err = |translation(E)| / L and
 //    r_err = angle(E) / L with angle = acos(max(min(0.5 (trace(R) - 1), 1), -1));
 //  - the result is the mean over all segments of all lengths (pooled), and per length.
-// Like the devkit, every step runs in single precision: poses are rounded to float, path
-// distances are float sums, pose products and (general, Gauss-Jordan) inverses are float,
-// and the means are float sums in the devkit's order (start frame outer, length inner).
-// Single precision decides the segment end frames, and so the numbers the benchmark prints;
-// a double implementation differs by up to about 5e-4 relative. t_err does not depend on
-// the order of the float operations beyond ~1e-6 relative; r_err does at ~1e-4 (the float
-// acos of a cosine near 1 is coarse for the small angles of good estimates), so it matches
-// another single-precision implementation only as closely as their operation orders agree.
+// Precision as in the devkit: poses, their products and their (general, Gauss-Jordan with
+// full pivoting) inverses in double; the path distances (double differences rounded to
+// float, float sums), the error pose's translation and diagonal, the per-segment errors and
+// their means (float sums in the devkit's order: start frame outer, length inner) in single
+// precision. Float distances decide the segment end frames, and so the numbers the benchmark
+// prints; a double implementation differs by up to about 5e-4 relative. With the same split
+// of precision the result matches the devkit's to about 1e-7 relative; float matrix
+// arithmetic would move r_err by ~1e-4 (the float acos of a cosine near 1 is coarse for the
+// small angles of good estimates and magnifies every rounding before it).
 struct KittiMetricOptions {
   // Segment lengths in metres (the devkit's 100, 200, ..., 800).
   std::vector<float> lengths_m = {100, 200, 300, 400, 500, 600, 700, 800};
@@ -71,7 +72,7 @@ KittiOdometryResult EvaluateKittiOdometry(const std::vector<Rigid3d>& gt_world_f
 // The devkit's rotation angle of a (float) rotation block, in radians.
 float KittiRotationError(const Eigen::Matrix3f& rotation);
 
-// dist[i] as the devkit sums it, from float positions.
+// dist[i] as the devkit sums it.
 std::vector<float> KittiPathDistances(const std::vector<Rigid3d>& world_from_cam);
 
 }  // namespace roadscale

@@ -25,7 +25,7 @@ std::string NoSegmentFits(float length_m, float path_length_m) {
 }
 
 void AppendKitti(const KittiOdometryResult& kitti, std::string& out) {
-  out += "KITTI odometry metric (devkit definition, single precision)\n";
+  out += "KITTI odometry metric (devkit definition and precision)\n";
   if (!kitti.t_err || !kitti.r_err) {
     const float shortest = kitti.per_length.empty() ? 0.0f : kitti.per_length.front().length_m;
     out += "  undefined: " + NoSegmentFits(shortest, kitti.gt_path_length_m) + "\n";

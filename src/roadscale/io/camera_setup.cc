@@ -9,24 +9,23 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/yaml_file.h"
 
 namespace roadscale {
 namespace {
 
-// yaml-cpp counts lines from 0 and marks "no position" with -1; ThrowFileError wants 1-based
-// lines and 0 for none.
-int LineOf(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
-
 YAML::Node RequireKey(const YAML::Node& block, const char* key, const std::string& path) {
   const YAML::Node node = block[key];
   if (!node) {
-    ThrowFileError(path, LineOf(block.Mark()),
+    ThrowFileError(path, YamlLine(block.Mark()),
                    std::string("Camera: missing key '") + key + "' (expected " +
                        "fx, fy, cx, cy, width, height, h0)");
   }
   if (!node.IsScalar()) {
-    ThrowFileError(path, LineOf(node.Mark()), std::string("Camera.") + key + ": expected a number");
+    ThrowFileError(path, YamlLine(node.Mark()),
+                   std::string("Camera.") + key + ": expected a number");
   }
   return node;
 }
@@ -39,7 +38,7 @@ double ReadDouble(const YAML::Node& block, const char* key, const std::string& p
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
       !std::isfinite(value)) {
-    ThrowFileError(path, LineOf(node.Mark()),
+    ThrowFileError(path, YamlLine(node.Mark()),
                    std::string("Camera.") + key + ": expected a number, found '" + text + "'");
   }
   return value;
@@ -51,7 +50,7 @@ int ReadInt(const YAML::Node& block, const char* key, const std::string& path) {
   int value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-    ThrowFileError(path, LineOf(node.Mark()),
+    ThrowFileError(path, YamlLine(node.Mark()),
                    std::string("Camera.") + key + ": expected an integer, found '" + text + "'");
   }
   return value;
@@ -71,24 +70,16 @@ void CameraSetup::Check() const {
   CheckOption(camera.cx >= 0.0 && camera.cx <= camera.width && camera.cy >= 0.0 &&
                   camera.cy <= camera.height,
               "camera.cx/cy", "the principal point must lie inside the image");
-  CheckOption(std::isfinite(h0) && h0 > 0.0, "camera.h0",
-              "the camera height above the road must be a positive number of metres");
+  CheckCameraHeight(h0, "camera.h0");
 }
 
 CameraSetup ReadCameraYaml(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    ThrowFileError(path, "cannot open camera YAML file");
-  } catch (const YAML::Exception& e) {
-    ThrowFileError(path, LineOf(e.mark), "invalid YAML: " + e.msg);
-  }
+  const YAML::Node root = LoadYamlFile(path, "camera YAML file");
   if (!root.IsMap()) ThrowFileError(path, "expected a YAML map with a top-level 'Camera:' block");
   const YAML::Node block = root["Camera"];
   if (!block) ThrowFileError(path, "missing the top-level 'Camera:' block");
   if (!block.IsMap()) {
-    ThrowFileError(path, LineOf(block.Mark()),
+    ThrowFileError(path, YamlLine(block.Mark()),
                    "'Camera:' must be a block of keys (fx, fy, cx, cy, width, height, h0)");
   }
 
@@ -103,7 +94,7 @@ CameraSetup ReadCameraYaml(const std::string& path) {
   try {
     setup.Check();
   } catch (const Error& e) {
-    ThrowFileError(path, LineOf(block.Mark()), std::string("Camera: ") + e.what());
+    ThrowFileError(path, YamlLine(block.Mark()), std::string("Camera: ") + e.what());
   }
   return setup;
 }

@@ -149,6 +149,23 @@ TEST(CameraSetup, MissingBlockOrFileIsNamed) {
               HasSubstr(dir.File("absent.yaml") + ": cannot open camera YAML file"));
 }
 
+TEST(CameraSetup, DuplicateKeyDirectoryAndAbsurdHeightAreErrors) {
+  TempDir dir;
+  const std::string twice = WriteTextFile(dir.File("twice.yaml"),
+                                          "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n"
+                                          "  width: 640\n  height: 480\n  h0: 1.5\n  fx: 800\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(twice); }),
+              HasSubstr(twice + ":9: key 'fx' appears twice in one mapping (first on line 2)"));
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(dir.path().string()); }),
+              HasSubstr(dir.path().string() + ": cannot open camera YAML file: is a directory"));
+  const std::string millimetres = WriteTextFile(
+      dir.File("mm.yaml"),
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1650\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(millimetres); }),
+              HasSubstr("must be in (0, 100] metres, got 1650"));
+}
+
 TEST(CameraSetup, WriterRefusesAnInvalidCameraAndAnUnwritablePath) {
   TempDir dir;
   CameraSetup bad = ExampleSetup();

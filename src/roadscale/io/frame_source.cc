@@ -9,8 +9,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/io/kitti_calib.h"
+#include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/input_file.h"
 
 namespace roadscale {
 namespace {
@@ -85,9 +88,16 @@ bool NaturalLess(const std::string& a, const std::string& b) {
 // Decodes one image; the only place frames are read, so every source reports the same
 // errors. `expected_width` 0 skips the size check (used to learn the first image's size).
 cv::Mat LoadImage(const std::string& path, bool color, int expected_width, int expected_height) {
-  cv::Mat image = cv::imread(path, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE);
+  // Read here rather than by cv::imread: the reason a file cannot be read (missing, a
+  // directory, permission denied) is named, and a truncated PNG is found before libpng and
+  // OpenCV print their own lines about it.
+  const std::string bytes = ReadInputFile(path, "image");
+  if (bytes.empty()) ThrowFileError(path, "cannot decode image (the file is empty)");
+  const std::string problem = PngStructureProblem(bytes);
+  if (!problem.empty()) ThrowFileError(path, "cannot decode image (" + problem + ")");
+  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
+  cv::Mat image = cv::imdecode(buffer, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE);
   if (image.empty()) {
-    if (!fs::exists(path)) ThrowFileError(path, "image file not found");
     ThrowFileError(path, "cannot decode image (corrupt, truncated or not an image)");
   }
   if (expected_width > 0 && (image.cols != expected_width || image.rows != expected_height)) {
@@ -249,8 +259,7 @@ void FrameSourceOptions::Check() const {
   CheckOption(!input.empty(), "input", "a KITTI sequence folder, image folder or video is needed");
   CheckOption(kitti_camera >= -1 && kitti_camera <= 3, "kitti_camera",
               "must be 0..3 (image_N with P_N) or -1 (image_0 when present, else image_2)");
-  CheckOption(!h0 || (std::isfinite(*h0) && *h0 > 0.0), "h0",
-              "the camera height above the road must be a positive number of metres");
+  if (h0) CheckCameraHeight(*h0, "h0");
   CheckOption(frames.begin < frames.end, "frames", "the range is empty");
 }
 
@@ -446,7 +455,7 @@ std::string ImageFolder::Describe() const {
 
 VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
   options.Check();
-  if (!fs::is_regular_file(path_)) ThrowFileError(path_, "video file not found");
+  CheckInputFile(path_, "video file");
   camera_ = ReadCameraForInput(options, "a video");
   color_ = options.color;
   if (!capture_.open(path_) || !capture_.isOpened()) {

@@ -514,7 +514,11 @@ TEST(VideoFile, UnopenableVideoAndWrongSizeAreErrors) {
   EXPECT_THAT(ErrorOf([&] { VideoFile v(options); }),
               HasSubstr(dir.File("broken.mp4") + ": cannot open video"));
   options.input = dir.File("absent.mp4");
-  EXPECT_THAT(ErrorOf([&] { VideoFile v(options); }), HasSubstr("video file not found"));
+  EXPECT_THAT(ErrorOf([&] { VideoFile v(options); }),
+              HasSubstr("cannot open video file: no such file"));
+  options.input = dir.path().string();
+  EXPECT_THAT(ErrorOf([&] { VideoFile v(options); }),
+              HasSubstr(dir.path().string() + ": cannot open video file: is a directory"));
 
   const std::string video = WriteTestVideo(dir);
   if (video.empty()) GTEST_SKIP() << "OpenCV cannot write MJPG .avi here (no codec/backend)";

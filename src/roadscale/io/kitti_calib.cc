@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "roadscale/util/error.h"
+#include "roadscale/util/input_file.h"
 #include "roadscale/util/text_parsing.h"
 
 namespace roadscale {
@@ -40,19 +41,17 @@ std::string FormatRow(const char* key, const KittiCalib::Matrix34d& m) {
 }  // namespace
 
 KittiCalib ReadKittiCalib(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) ThrowFileError(path, "cannot open KITTI calibration file");
+  const std::string text = ReadInputFile(path, "KITTI calibration file");
   KittiCalib calib;
-  std::string line;
-  for (int line_number = 1; std::getline(file, line); ++line_number) {
-    if (IsBlankOrComment(line)) continue;
+  ForEachLine(text, [&](std::string_view line, int line_number) {
+    if (IsBlankOrComment(line)) return;
     const size_t colon = line.find(':');
-    if (colon == std::string::npos) {
+    if (colon == std::string_view::npos) {
       ThrowFileError(path, line_number, "expected 'KEY: numbers' (such as 'P0: ' and 12 numbers)");
     }
-    const std::string key = Trim(line.substr(0, colon));
+    const std::string key = Trim(std::string(line.substr(0, colon)));
     const int row = KnownRow(key);
-    if (row < 0) continue;
+    if (row < 0) return;
     const std::vector<double> v = ParseNumbers(line.substr(colon + 1), path, line_number);
     if (v.size() != 12) {
       ThrowFileError(path, line_number,
@@ -66,7 +65,7 @@ KittiCalib ReadKittiCalib(const std::string& path) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 4; ++c) m(r, c) = v[4 * r + c];
     }
-  }
+  });
   return calib;
 }
 
@@ -132,12 +131,10 @@ void WriteKittiCalib(const std::string& path, const PinholeCamera& camera) {
 }
 
 std::vector<double> ReadKittiTimes(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) ThrowFileError(path, "cannot open timestamps file");
+  const std::string text = ReadInputFile(path, "timestamps file");
   std::vector<double> times;
-  std::string line;
-  for (int line_number = 1; std::getline(file, line); ++line_number) {
-    if (IsBlankOrComment(line)) continue;
+  ForEachLine(text, [&](std::string_view line, int line_number) {
+    if (IsBlankOrComment(line)) return;
     const std::vector<double> v = ParseNumbers(line, path, line_number);
     if (v.size() != 1) {
       ThrowFileError(
@@ -148,7 +145,7 @@ std::vector<double> ReadKittiTimes(const std::string& path) {
       ThrowFileError(path, line_number, "timestamps must increase");
     }
     times.push_back(v[0]);
-  }
+  });
   return times;
 }
 

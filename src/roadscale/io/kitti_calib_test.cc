@@ -139,6 +139,20 @@ TEST(KittiCalib, TimesAreReadAndMustIncrease) {
               HasSubstr("cannot open timestamps file"));
 }
 
+TEST(KittiCalib, AByteOrderMarkIsSkippedAndADirectoryIsNamed) {
+  TempDir dir;
+  const std::string path =
+      WriteTextFile(dir.File("calib.txt"), "\xEF\xBB\xBFP0: 700 0 600 0 0 700 180 0 0 0 1 0\n");
+  const KittiCalib calib = ReadKittiCalib(path);
+  EXPECT_TRUE(calib.has_P[0]);
+  EXPECT_EQ(calib.P[0](0, 0), 700.0);
+  EXPECT_THAT(
+      ErrorOf([&] { ReadKittiCalib(dir.path().string()); }),
+      HasSubstr(dir.path().string() + ": cannot open KITTI calibration file: is a directory"));
+  EXPECT_THAT(ErrorOf([&] { ReadKittiTimes(dir.path().string()); }),
+              HasSubstr(": cannot open timestamps file: is a directory"));
+}
+
 TEST(KittiCalibData, SharedSequence00) {
   ROADSCALE_REQUIRE_SHARED("kitti/sequences/00/calib.txt");
   const std::string path = testing::SharedPath("kitti/sequences/00/calib.txt").string();

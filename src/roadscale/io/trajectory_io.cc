@@ -1,19 +1,17 @@
 #include "roadscale/io/trajectory_io.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
+#include "roadscale/io/pose_row_check.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/input_file.h"
 #include "roadscale/util/text_parsing.h"
 
 namespace roadscale {
 namespace {
-
-std::ifstream OpenForReading(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) ThrowFileError(path, "cannot open trajectory file");
-  return file;
-}
 
 std::string FormatNumber(double value) {
   char buffer[32];
@@ -38,12 +36,10 @@ TrajectoryFormat ParseTrajectoryFormat(const std::string& name) {
   throw Error("unknown trajectory format '" + name + "' (expected kitti or tum)");
 }
 
-Trajectory ReadKittiTrajectory(const std::string& path) {
-  std::ifstream file = OpenForReading(path);
+Trajectory ParseKittiTrajectory(std::string_view text, const std::string& path) {
   Trajectory trajectory;
-  std::string line;
-  for (int line_number = 1; std::getline(file, line); ++line_number) {
-    if (IsBlankOrComment(line)) continue;
+  ForEachLine(text, [&](std::string_view line, int line_number) {
+    if (IsBlankOrComment(line)) return;
     const std::vector<double> v = ParseNumbers(line, path, line_number);
     if (v.size() != 12) {
       ThrowFileError(
@@ -54,17 +50,16 @@ Trajectory ReadKittiTrajectory(const std::string& path) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 4; ++c) pose.matrix()(r, c) = v[4 * r + c];
     }
+    CheckPoseRow(pose.linear(), pose.translation(), path, line_number);
     trajectory.world_from_cam.push_back(pose);
-  }
+  });
   return trajectory;
 }
 
-Trajectory ReadTumTrajectory(const std::string& path) {
-  std::ifstream file = OpenForReading(path);
+Trajectory ParseTumTrajectory(std::string_view text, const std::string& path) {
   Trajectory trajectory;
-  std::string line;
-  for (int line_number = 1; std::getline(file, line); ++line_number) {
-    if (IsBlankOrComment(line)) continue;
+  ForEachLine(text, [&](std::string_view line, int line_number) {
+    if (IsBlankOrComment(line)) return;
     const std::vector<double> v = ParseNumbers(line, path, line_number);
     if (v.size() != 8) {
       ThrowFileError(
@@ -72,19 +67,61 @@ Trajectory ReadTumTrajectory(const std::string& path) {
           "expected 8 numbers (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size()));
     }
     const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-    if (q.norm() < 1e-6) ThrowFileError(path, line_number, "quaternion has zero length");
+    // Normalising hides a zero or garbage quaternion; a unit one written with few digits
+    // is within the rotation tolerance of length 1.
+    if (!(std::abs(q.norm() - 1.0) <= kRotationTolerance)) {
+      ThrowFileError(
+          path, line_number,
+          "the quaternion (qx qy qz qw) has length " + std::to_string(q.norm()) + ", expected 1");
+    }
     if (trajectory.HasTimestamps() && v[0] <= trajectory.timestamps.back()) {
       ThrowFileError(path, line_number, "timestamps must increase");
     }
+    const Eigen::Matrix3d rotation = q.normalized().toRotationMatrix();
+    const Eigen::Vector3d translation(v[1], v[2], v[3]);
+    CheckPoseRow(rotation, translation, path, line_number);
     trajectory.timestamps.push_back(v[0]);
-    trajectory.world_from_cam.push_back(
-        MakeRigid3d(q.normalized().toRotationMatrix(), Eigen::Vector3d(v[1], v[2], v[3])));
-  }
+    trajectory.world_from_cam.push_back(MakeRigid3d(rotation, translation));
+  });
   return trajectory;
+}
+
+TrajectoryFormat DetectTrajectoryFormat(std::string_view text, const std::string& path) {
+  std::optional<TrajectoryFormat> format;
+  ForEachLine(text, [&](std::string_view line, int line_number) {
+    if (format || IsBlankOrComment(line)) return;
+    const size_t count = ParseNumbers(line, path, line_number).size();
+    if (count == 8) {
+      format = TrajectoryFormat::kTum;
+    } else if (count == 12) {
+      format = TrajectoryFormat::kKitti;
+    } else {
+      ThrowFileError(path, line_number,
+                     "cannot tell the format from a row of " + std::to_string(count) +
+                         " numbers (KITTI: 12, TUM: 8); give --format kitti|tum");
+    }
+  });
+  if (!format) ThrowFileError(path, "no poses in the file");
+  return *format;
+}
+
+Trajectory ReadKittiTrajectory(const std::string& path) {
+  return ParseKittiTrajectory(ReadInputFile(path, "trajectory file"), path);
+}
+
+Trajectory ReadTumTrajectory(const std::string& path) {
+  return ParseTumTrajectory(ReadInputFile(path, "trajectory file"), path);
 }
 
 Trajectory ReadTrajectory(const std::string& path, TrajectoryFormat format) {
   return format == TrajectoryFormat::kKitti ? ReadKittiTrajectory(path) : ReadTumTrajectory(path);
+}
+
+Trajectory ReadTrajectoryOfEitherFormat(const std::string& path, TrajectoryFormat* format) {
+  const std::string text = ReadInputFile(path, "trajectory file");
+  *format = DetectTrajectoryFormat(text, path);
+  return *format == TrajectoryFormat::kKitti ? ParseKittiTrajectory(text, path)
+                                             : ParseTumTrajectory(text, path);
 }
 
 std::string FormatKittiRow(const Rigid3d& world_from_cam) {

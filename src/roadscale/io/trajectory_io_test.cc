@@ -1,5 +1,6 @@
 #include "roadscale/io/trajectory_io.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "roadscale/testing/shared_data.h"
@@ -76,6 +77,67 @@ TEST(TrajectoryIo, MalformedRowsNameFileAndLine) {
       WriteTextFile(dir.File("back.tum"), "0.2 1 2 3 0 0 0 1\n0.1 1 2 3 0 0 0 1\n");
   EXPECT_THROW(ReadTumTrajectory(backwards), Error);
   EXPECT_THROW(ReadKittiTrajectory(dir.File("does_not_exist.txt")), Error);
+}
+
+std::string ErrorOf(const std::string& path, TrajectoryFormat format) {
+  try {
+    ReadTrajectory(path, format);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(TrajectoryIo, KittiRowsMustBeRigid) {
+  TempDir dir;
+  const std::string identity = "1 0 0 0 0 1 0 0 0 0 1 0\n";
+  const auto error_of_second_row = [&](const std::string& name, const std::string& row) {
+    return ErrorOf(WriteTextFile(dir.File(name), identity + row + "\n"), TrajectoryFormat::kKitti);
+  };
+  const std::string not_rotation = ":2: the 3x3 part is not a rotation";
+  EXPECT_EQ(error_of_second_row("zero.txt", "0 0 0 1 0 0 0 2 0 0 0 3"),
+            dir.File("zero.txt") + not_rotation +
+                " (max |R^T R - I| = 1, det(R) = 0; expected below 0.01 and det > 0)");
+  EXPECT_THAT(error_of_second_row("scaled.txt", "1.1 0 0 1 0 1.1 0 2 0 0 1.1 3"),
+              ::testing::HasSubstr(not_rotation));
+  EXPECT_THAT(error_of_second_row("sheared.txt", "1 0.3 0 1 0 1 0 2 0 0 1 3"),
+              ::testing::HasSubstr(not_rotation));
+  // Orthogonal but mirrored: det -1.
+  EXPECT_THAT(error_of_second_row("mirrored.txt", "-1 0 0 1 0 1 0 2 0 0 1 3"),
+              ::testing::HasSubstr("det(R) = -1"));
+  EXPECT_EQ(error_of_second_row("far.txt", "1 0 0 1e30 0 1 0 2 0 0 1 3"),
+            dir.File("far.txt") + ":2: the position (1e+30, 2, 3) is beyond 1e+08 m");
+  // A rotation of 0.3 rad about y rounded to 3 decimals passes.
+  EXPECT_EQ(error_of_second_row("rounded.txt", "0.955 0 0.296 1 0 1 0 2 -0.296 0 0.955 3"),
+            "no error");
+}
+
+TEST(TrajectoryIo, TumQuaternionsMustHaveUnitLength) {
+  TempDir dir;
+  const std::string zero = WriteTextFile(dir.File("zero.tum"), "0 1 2 3 0 0 0 0\n");
+  EXPECT_THAT(ErrorOf(zero, TrajectoryFormat::kTum),
+              ::testing::HasSubstr(zero + ":1: the quaternion (qx qy qz qw) has length 0.000000"));
+  const std::string half = WriteTextFile(dir.File("half.tum"), "0 1 2 3 0 0 0 0.5\n");
+  EXPECT_THAT(ErrorOf(half, TrajectoryFormat::kTum), ::testing::HasSubstr("has length 0.5"));
+  const std::string rounded =
+      WriteTextFile(dir.File("ok.tum"), "0 1 2 3 0.0998 0 0 0.995\n");  // |q| = 0.99999
+  EXPECT_EQ(ErrorOf(rounded, TrajectoryFormat::kTum), "no error");
+}
+
+TEST(TrajectoryIo, FormatFromTheFirstRow) {
+  TempDir dir;
+  TrajectoryFormat format = TrajectoryFormat::kKitti;
+  const std::string tum =
+      WriteTextFile(dir.File("a.txt"), "# comment\n\n0 1 2 3 0 0 0 1\n0.1 1 2 4 0 0 0 1\n");
+  EXPECT_EQ(ReadTrajectoryOfEitherFormat(tum, &format).size(), 2u);
+  EXPECT_EQ(format, TrajectoryFormat::kTum);
+  const std::string kitti = WriteTextFile(dir.File("b.txt"), "1 0 0 0 0 1 0 0 0 0 1 0\n");
+  EXPECT_EQ(ReadTrajectoryOfEitherFormat(kitti, &format).size(), 1u);
+  EXPECT_EQ(format, TrajectoryFormat::kKitti);
+  EXPECT_THROW(ReadTrajectoryOfEitherFormat(WriteTextFile(dir.File("c.txt"), "1 2 3\n"), &format),
+               Error);
+  EXPECT_THROW(ReadTrajectoryOfEitherFormat(WriteTextFile(dir.File("d.txt"), "# none\n"), &format),
+               Error);
 }
 
 TEST(TrajectoryIo, ReadsSharedKittiGroundTruth) {

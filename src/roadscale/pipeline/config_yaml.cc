@@ -10,7 +10,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/yaml_file.h"
 
 namespace roadscale {
 namespace {
@@ -203,6 +205,53 @@ std::vector<Block> Blocks(RunConfig& c) {
   throw Error(path + ":" + std::to_string(mark.line + 1) + ": " + message);
 }
 
+// A key as the file gave it, to read it again onto another config.
+struct ReadKey {
+  std::string block;
+  std::string key;
+  YAML::Node value;
+};
+
+RunConfig ApplyAllBut(const RunConfig& initial, const std::vector<ReadKey>& keys, size_t skip) {
+  RunConfig trial = initial;
+  std::vector<Block> blocks = Blocks(trial);
+  for (size_t i = 0; i < keys.size(); ++i) {
+    if (i == skip) continue;
+    for (const Block& block : blocks) {
+      for (const Key& key : block.keys) {
+        if (block.name == keys[i].block && key.name == keys[i].key) key.read(keys[i].value);
+      }
+    }
+  }
+  return trial;
+}
+
+void CheckValues(const RunConfig& config) {
+  if (config.camera.h0) CheckCameraHeight(*config.camera.h0, "camera.h0");
+  config.pipeline.Check();
+  config.scale.Check();
+  config.segmentation.Check();
+}
+
+// The options' range checks, with the file and the culprit key's line: the first key without
+// which the config passes (when only several keys together break a check, the file alone).
+void CheckConfigValues(const std::string& path, const RunConfig& initial,
+                       const std::vector<ReadKey>& keys, const RunConfig& config) {
+  try {
+    CheckValues(config);
+  } catch (const Error& error) {
+    for (size_t i = 0; i < keys.size(); ++i) {
+      try {
+        CheckValues(ApplyAllBut(initial, keys, i));
+      } catch (const Error&) {
+        continue;
+      }
+      ThrowAt(path, keys[i].value.Mark(), keys[i].block + "." + keys[i].key + ": " + error.what());
+    }
+    ThrowFileError(path, error.what());
+  }
+}
+
 std::string KeyNames(const Block& block) {
   std::string names;
   for (const Key& key : block.keys) names += (names.empty() ? "" : ", ") + key.name;
@@ -212,15 +261,10 @@ std::string KeyNames(const Block& block) {
 }  // namespace
 
 void ReadRunConfig(const std::string& path, RunConfig* config) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    ThrowFileError(path, "cannot read the config file");
-  } catch (const YAML::Exception& e) {
-    ThrowAt(path, e.mark, "YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = LoadYamlFile(path, "config file");
   if (root.IsNull()) return;
+  const RunConfig initial = *config;
+  std::vector<ReadKey> read_keys;
   if (!root.IsMap())
     ThrowAt(path, root.Mark(),
             "expected blocks Camera:, Frontend:, Scale:, Mapping:, Segmentation:");
@@ -255,6 +299,7 @@ void ReadRunConfig(const std::string& path, RunConfig* config) {
           ThrowAt(path, item.second.Mark(), block_name + "." + key_name + " has no value");
         }
         key->read(item.second);
+        read_keys.push_back({block_name, key_name, item.second});
       } catch (const YAML::Exception& e) {
         ThrowAt(path, item.second.Mark(),
                 "invalid value for " + block_name + "." + key_name +
@@ -268,6 +313,7 @@ void ReadRunConfig(const std::string& path, RunConfig* config) {
   if (given != 0 && given != 6) {
     ThrowFileError(path, "Camera: give all of fx, fy, cx, cy, width, height, or none");
   }
+  CheckConfigValues(path, initial, read_keys, *config);
 }
 
 std::string FormatRunConfig(const RunConfig& config) {

@@ -38,8 +38,8 @@ struct RunConfig {
 // Reads a config file over `config` (keys it does not name keep their values). The file has
 // the blocks Camera:, Frontend:, Scale:, Mapping:, Segmentation:, each a mapping, each key optional
 // (config/kitti.yaml lists them all with the paper's values). Throws Error naming the file
-// and the line for a YAML syntax error, an unknown block or key, or a value of the wrong
-// type.
+// and the line for a YAML syntax error, an unknown block or key, a key or block given twice,
+// a value of the wrong type, or a value its option's Check() rejects.
 void ReadRunConfig(const std::string& path, RunConfig* config);
 
 // The config as a YAML file that ReadRunConfig reads back to the same values (doubles with

@@ -130,5 +130,39 @@ TEST(RunConfigYaml, ErrorsNameTheFileAndLine) {
             std::string::npos);
 }
 
+TEST(RunConfigYaml, RepeatedBlocksAndKeysAreErrors) {
+  testing::TempDir dir;
+  const std::string block_twice =
+      WriteFile(dir,
+                "Scale:\n  filter_window: 3\nFrontend:\n  detector: orb\nScale:\n  "
+                "use_filter: false\n");
+  EXPECT_NE(ErrorOf(block_twice)
+                .find("config.yaml:5: key 'Scale' appears twice in one mapping (first on line 1)"),
+            std::string::npos)
+      << ErrorOf(block_twice);
+  const std::string key_twice = WriteFile(dir, "Frontend:\n  detector: orb\n  detector: sift\n");
+  EXPECT_NE(ErrorOf(key_twice).find("config.yaml:3: key 'detector' appears twice"),
+            std::string::npos)
+      << ErrorOf(key_twice);
+}
+
+TEST(RunConfigYaml, RangeErrorsNameTheFileAndTheKeysLine) {
+  testing::TempDir dir;
+  const std::string window = WriteFile(
+      dir, "Frontend:\n  detector: orb\nScale:\n  use_filter: true\n  filter_window: -3\n");
+  EXPECT_EQ(ErrorOf(window).rfind(
+                dir.File("config.yaml") + ":5: Scale.filter_window: invalid option ", 0),
+            0u)
+      << ErrorOf(window);
+  const std::string height = WriteFile(dir, "Camera:\n  h0: 1650\n");
+  EXPECT_EQ(ErrorOf(height),
+            dir.File("config.yaml") +
+                ":2: Camera.h0: invalid option camera.h0: the camera height above the road must "
+                "be in (0, 100] metres, got 1650");
+  const std::string workers = WriteFile(dir, "Segmentation:\n  every: 1\n  workers: 99\n");
+  EXPECT_EQ(ErrorOf(workers).rfind(dir.File("config.yaml") + ":3: Segmentation.workers: ", 0), 0u)
+      << ErrorOf(workers);
+}
+
 }  // namespace
 }  // namespace roadscale

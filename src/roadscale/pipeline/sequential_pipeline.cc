@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/io/pose_row_check.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/util/error.h"
@@ -32,6 +34,23 @@ void WriteLine(std::ofstream& file, const std::string& path, const std::string& 
   file << line << '\n';
   file.flush();
   if (!file) ThrowFileError(path, "write failed (disk full or file removed?)");
+}
+
+// A pose the trajectory readers would reject (eval, rescale, the run's own report) is never
+// written: the run stops with an error naming the frame, the rows before it intact.
+void CheckPoseToWrite(const Rigid3d& world_from_cam, const FrameRecord& record) {
+  const Eigen::Vector3d& position = world_from_cam.translation();
+  if (world_from_cam.matrix().allFinite() && position.cwiseAbs().maxCoeff() <= kMaxTranslationM) {
+    return;
+  }
+  char text[240];
+  std::snprintf(
+      text, sizeof(text),
+      "frame %zu: the pose would be at (%.3g, %.3g, %.3g) m, beyond %g m, after a step of "
+      "%.3g m (%s): not written",
+      record.index, position.x(), position.y(), position.z(), kMaxTranslationM,
+      record.step_length_m, record.scale_status.c_str());
+  throw Error(text);
 }
 
 }  // namespace
@@ -242,6 +261,7 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
 }
 
 void SequentialPipeline::WriteRows(const FrameRecord& record, const Rigid3d& world_from_cam) {
+  CheckPoseToWrite(world_from_cam, record);
   WriteLine(poses_, poses_path_, FormatKittiRow(world_from_cam));
   WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, world_from_cam));
   // The scale source's own columns, left empty in frames it did not see.

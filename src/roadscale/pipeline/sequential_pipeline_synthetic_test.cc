@@ -105,6 +105,48 @@ class LateOracle : public ScaleSource {
   size_t first_scaled_;
 };
 
+// The oracle's lengths times `factor`: a scale source gone wrong (h0 in the wrong unit).
+class ScaledOracle : public ScaleSource {
+ public:
+  ScaledOracle(Trajectory ground_truth, double factor)
+      : oracle_(std::move(ground_truth)), factor_(factor) {}
+  std::string Name() const override { return "scaled oracle"; }
+  ScaleResult StepLength(const ScaleQuery& query) override {
+    ScaleResult result = oracle_.StepLength(query);
+    result.step_length_m *= factor_;
+    return result;
+  }
+
+ private:
+  OracleScaleSource oracle_;
+  double factor_;
+};
+
+TEST(SequentialPipelineSynthetic, APoseBeyondWhatTheReadersAcceptIsNeverWritten) {
+  constexpr int kFrames = 6;
+  testing::TempDir dir;
+  const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
+  const auto source = OpenFrameSource(source_options);
+  // Steps of about 5e7 m: within a few frames the camera is beyond kMaxTranslationM.
+  ScaledOracle absurd(*source->ground_truth(), 5e7);
+  const std::string out = dir.File("run");
+  std::string message;
+  try {
+    RunSequentialPipeline(*source, absurd, {}, out);
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  ASSERT_EQ(message.rfind("frame ", 0), 0u) << message;
+  EXPECT_NE(message.find(": the pose would be at ("), std::string::npos) << message;
+  EXPECT_NE(message.find("beyond 1e+08 m"), std::string::npos) << message;
+  const size_t failed_frame = std::stoul(message.substr(6));
+  EXPECT_GE(failed_frame, 1u);
+  EXPECT_LT(failed_frame, static_cast<size_t>(kFrames));
+  // The rows before it are intact and read back (the readers reject what was refused).
+  EXPECT_EQ(ReadKittiTrajectory(out + "/poses_kitti.txt").size(), failed_frame);
+  EXPECT_EQ(ReadTumTrajectory(out + "/poses_tum.txt").size(), failed_frame);
+}
+
 // The `status` column of OUT/frames.csv, one entry per frame.
 std::vector<std::string> StatusColumn(const std::string& path) {
   std::ifstream file(path);

@@ -375,6 +375,10 @@ std::vector<RescaledPose> TrajectoryRescaler::Finish() {
                 ", before the frame of the trajectory's last pose (" +
                 std::to_string(pose_frames_.back()) + ")");
   }
+  return FinishEarly();
+}
+
+std::vector<RescaledPose> TrajectoryRescaler::FinishEarly() {
   std::vector<RescaledPose> finished;
   while (!pending_.empty()) {
     RescaledPose waiting = std::move(pending_.front());
@@ -385,9 +389,10 @@ std::vector<RescaledPose> TrajectoryRescaler::Finish() {
   return finished;
 }
 
-void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
+bool RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
                            TrajectoryRescaler& rescaler,
-                           const std::function<void(const RescaledPose&)>& on_pose) {
+                           const std::function<void(const RescaledPose&)>& on_pose,
+                           const std::atomic<bool>* stop) {
   if (rescaler.last_frame() >= source.size()) {
     throw Error("rescaling: the trajectory's last pose is at frame position " +
                 std::to_string(rescaler.last_frame()) + " but the input has " +
@@ -395,6 +400,10 @@ void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter
   }
   const SegmentationResult no_segmentation;
   for (size_t position = rescaler.first_frame(); position <= rescaler.last_frame(); ++position) {
+    if (stop != nullptr && stop->load()) {
+      for (const RescaledPose& pose : rescaler.FinishEarly()) on_pose(pose);
+      return true;
+    }
     const auto start = std::chrono::steady_clock::now();
     const Frame frame = source.Read(position);
     const double read_ms = MillisecondsSince(start);
@@ -413,6 +422,7 @@ void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter
     }
   }
   for (const RescaledPose& pose : rescaler.Finish()) on_pose(pose);
+  return false;
 }
 
 std::string RescaleCsvHeader() {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -171,8 +172,11 @@ class TrajectoryRescaler {
                                      double segmentation_ms = 0.0, double read_ms = 0.0);
 
   // After the last frame: the poses still waiting for a first road plane, as kUnscaled (the
-  // VO's own lengths). Empty when a road plane was found.
+  // VO's own lengths). Empty when a road plane was found. Throws Error when frames are missing.
   std::vector<RescaledPose> Finish();
+  // The same when the frames stop early (an interruption): the waiting poses as kUnscaled;
+  // the steps whose frames were not all read are not emitted.
+  std::vector<RescaledPose> FinishEarly();
 
   // True once a road plane has given a ratio.
   bool has_ratio() const { return has_ratio_; }
@@ -207,10 +211,12 @@ class TrajectoryRescaler {
 // Reads `source`'s frames first_frame() .. last_frame() (the others are not decoded),
 // segments the pose frames with `segmenter` (nullptr: no segmentation; the frame's file stem
 // is its name), feeds `rescaler`, and calls `on_pose` for each finished pose in order,
-// including those Finish() returns.
-void RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
+// including those Finish() returns. When `stop` becomes true it stops after the frame in
+// flight (with FinishEarly()) and returns true; false after the last frame.
+bool RunTrajectoryRescaler(const ImageFileSequence& source, Segmenter* segmenter,
                            TrajectoryRescaler& rescaler,
-                           const std::function<void(const RescaledPose&)>& on_pose);
+                           const std::function<void(const RescaledPose&)>& on_pose,
+                           const std::atomic<bool>* stop = nullptr);
 
 // The header and one row of OUT/rescale.csv (one row per step, i.e. per pose after the
 // first).

@@ -251,6 +251,30 @@ TEST(TrajectoryRescaler, StepsBeforeTheFirstRoadPlaneTakeItsRatio) {
   EXPECT_EQ(poses[4].status, RescaleStatus::kOk);
 }
 
+TEST(TrajectoryRescaler, AnEarlyFinishEmitsTheWaitingStepsUnscaled) {
+  const FlatRoadRenderer renderer;
+  const Trajectory gt = Drive(std::vector<double>(8, 1.0));
+  const Trajectory external = DistortTrajectoryScale(gt, {});
+  TrajectoryRescaler rescaler(renderer.camera(), external, AllFrames(gt.size()), Options());
+  std::vector<RescaledPose> poses;
+  // Frames 0-3 without road: steps 1-3 wait for a first road plane when the run stops.
+  for (size_t position = 0; position < 4; ++position) {
+    Frame frame;
+    frame.index = position;
+    frame.image = renderer.Render(gt.world_from_cam[position], true);
+    const std::vector<RescaledPose> finished = rescaler.AddFrame(frame, SegmentationResult());
+    poses.insert(poses.end(), finished.begin(), finished.end());
+  }
+  ASSERT_EQ(poses.size(), 1u);
+  EXPECT_THROW(rescaler.Finish(), Error);
+  const std::vector<RescaledPose> waiting = rescaler.FinishEarly();
+  ASSERT_EQ(waiting.size(), 3u);
+  for (size_t k = 0; k < waiting.size(); ++k) {
+    EXPECT_EQ(waiting[k].status, RescaleStatus::kUnscaled) << k;
+    EXPECT_TRUE(waiting[k].world_from_cam.isApprox(external.world_from_cam[k + 1], 1e-9)) << k;
+  }
+}
+
 TEST(TrajectoryRescaler, WithoutAnyRoadTheTrajectoryStaysUnscaled) {
   const FlatRoadRenderer renderer;
   const Trajectory gt = Drive(std::vector<double>(4, 1.0));

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -30,8 +31,7 @@ std::vector<int> Compose(const std::vector<int>& indices, const std::vector<int>
 }  // namespace
 
 void ScaleEstimatorOptions::Check() const {
-  CheckOption(std::isfinite(camera_height) && camera_height > 0.0, "scale.camera_height",
-              "must be a positive number of metres (h0)");
+  CheckCameraHeight(camera_height, "scale.camera_height");
   CheckOption(std::isfinite(min_angle_below_horizon_deg) && min_angle_below_horizon_deg >= 0.0 &&
                   min_angle_below_horizon_deg < 45.0,
               "scale.min_angle_below_horizon_deg", "must be in [0, 45) degrees");

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
 
 #include <yaml-cpp/yaml.h>
 
 #include "roadscale/util/error.h"
 #include "roadscale/util/shared_data.h"
+#include "roadscale/util/yaml_file.h"
 
 namespace roadscale {
 namespace {
@@ -127,6 +129,35 @@ void ReadClassIds(const ModelFileReader& reader, MaskClasses* classes) {
   }
 }
 
+// A network outputs the train ids of its classes (train_ids, or the class indices
+// 0..num_classes-1). A road id it never outputs leaves every frame without road, and so the
+// whole run unscaled; a dynamic id it never outputs silently masks nothing. So every id the
+// file lists must be one it outputs, and the default road id too.
+void CheckIdsAreOutput(const ModelFileReader& reader, const OnnxModelSpec& spec,
+                       const MaskClasses& classes) {
+  std::set<int> output;
+  for (int index = 0; index < spec.num_classes; ++index) {
+    output.insert(spec.train_ids.empty() ? index : spec.train_ids[static_cast<size_t>(index)]);
+  }
+  const std::string outputs =
+      spec.train_ids.empty()
+          ? "its class indices 0.." + std::to_string(spec.num_classes - 1) + " are its train ids"
+          : "see its train_ids";
+  for (const auto& [key, ids] :
+       {std::pair<std::string, const std::vector<int>*>{"road_ids", &classes.road_ids},
+        {"dynamic_ids", &classes.dynamic_ids}}) {
+    if (!reader.Has(key) && key == "dynamic_ids") continue;
+    for (int id : *ids) {
+      if (output.count(id) == 0) {
+        reader.Fail(reader.root()[key], std::string(reader.Has(key) ? "" : "the default ") + "'" +
+                                            key + "' holds " + std::to_string(id) +
+                                            ", a train id the network never outputs (" + outputs +
+                                            ")");
+      }
+    }
+  }
+}
+
 OnnxModelSpec ReadOnnxSpec(const ModelFileReader& reader) {
   OnnxModelSpec spec;
   spec.file = ResolveModelFile(reader.path(), reader.String("file", "the path of an .onnx file"));
@@ -137,6 +168,13 @@ OnnxModelSpec ReadOnnxSpec(const ModelFileReader& reader) {
   }
   spec.input_width = reader.Integer(size[0], "input_size", 1);
   spec.input_height = reader.Integer(size[1], "input_size", 1);
+  // Beyond this a typo (100000) would try to allocate tens of GB for the input blob.
+  constexpr int kMaxInputSide = 4096;
+  if (spec.input_width > kMaxInputSide || spec.input_height > kMaxInputSide) {
+    reader.Fail(size, "'input_size' sides must be <= " + std::to_string(kMaxInputSide) + ", got [" +
+                          std::to_string(spec.input_width) + ", " +
+                          std::to_string(spec.input_height) + "]");
+  }
 
   spec.channel_order = reader.Choice("channel_order", {"rgb", "bgr"}, "") == "rgb"
                            ? ChannelOrder::kRgb
@@ -221,15 +259,7 @@ fs::path ResolveModelFile(const std::string& yaml_path, const std::string& file)
 }
 
 SegmentationModel ReadSegmentationModel(const std::string& yaml_path) {
-  if (!fs::is_regular_file(yaml_path))
-    ThrowFileError(yaml_path, "segmentation model file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::Exception& e) {
-    ThrowFileError(yaml_path, e.mark.line >= 0 ? e.mark.line + 1 : 0,
-                   "not a valid YAML file: " + e.msg);
-  }
+  const YAML::Node root = LoadYamlFile(yaml_path, "segmentation model file");
   if (!root.IsMap()) {
     ThrowFileError(yaml_path,
                    "expected a YAML mapping with a 'backend' key (onnx, label_images "
@@ -257,6 +287,9 @@ SegmentationModel ReadSegmentationModel(const std::string& yaml_path) {
     model.label_images = ReadLabelImageSpec(reader);
   }
   ReadClassIds(reader, &model.classes);
+  if (model.backend == SegmentationBackend::kOnnx) {
+    CheckIdsAreOutput(reader, model.onnx, model.classes);
+  }
   return model;
 }
 

@@ -60,7 +60,7 @@ TEST_F(SegmentationModelTest, ReadsAnOnnxDescriptionWithDefaults) {
 TEST_F(SegmentationModelTest, ReadsEveryOnnxKey) {
   const SegmentationModel model = ReadSegmentationModel(Yaml(OnnxYaml(
       "input_channels: 1\nscale: 0.00392156862745098\nmean: [0.485, 0.456, 0.406]\n"
-      "std: [0.229, 0.224, 0.225]\noutput: labels\nclasses: [a, b, c]\ntrain_ids: [0, 13, 255]\n"
+      "std: [0.229, 0.224, 0.225]\noutput: labels\nclasses: [a, b, c]\ntrain_ids: [0, 13, 1]\n"
       "road_ids: [0, 1]\ndynamic_ids: [13]\n")));
   EXPECT_EQ(model.onnx.input_channels, 1);
   EXPECT_DOUBLE_EQ(model.onnx.scale, 1.0 / 255.0);
@@ -68,7 +68,7 @@ TEST_F(SegmentationModelTest, ReadsEveryOnnxKey) {
   EXPECT_DOUBLE_EQ(model.onnx.std[0], 0.229);
   EXPECT_EQ(model.onnx.output, OutputLayout::kLabels);
   EXPECT_EQ(model.onnx.class_names, (std::vector<std::string>{"a", "b", "c"}));
-  EXPECT_EQ(model.onnx.train_ids, (std::vector<int>{0, 13, 255}));
+  EXPECT_EQ(model.onnx.train_ids, (std::vector<int>{0, 13, 1}));
   EXPECT_EQ(model.classes.road_ids, (std::vector<int>{0, 1}));
   EXPECT_EQ(model.classes.dynamic_ids, std::vector<int>{13});
 }
@@ -106,7 +106,18 @@ TEST_F(SegmentationModelTest, MissingOrWrongValuesSayWhatWasExpected) {
       {"backend: none\nfile: x.onnx\n", "unknown key 'file' for backend none"},
       {"backend: label_images\nfolder: .\n", "missing key 'ids'"},
       {"- backend: onnx\n", "expected a YAML mapping"},
-      {"backend: onnx\nfile: [a, b\n", "not a valid YAML file"},
+      {"backend: onnx\nfile: [a, b\n", "invalid YAML"},
+      {"backend: onnx\nfile: net.onnx\ninput_size: [100000, 100000]\nchannel_order: rgb\n"
+       "num_classes: 3\n",
+       "model.yaml:3: 'input_size' sides must be <= 4096, got [100000, 100000]"},
+      {OnnxYaml("road_ids: [0, 7]\n"),
+       "model.yaml:6: 'road_ids' holds 7, a train id the network never outputs (its class indices "
+       "0..2 are its train ids)"},
+      {OnnxYaml("dynamic_ids: [13]\n"), "'dynamic_ids' holds 13, a train id the network never"},
+      {OnnxYaml("train_ids: [3, 255, 13]\n"),
+       "the default 'road_ids' holds 0, a train id the network never outputs (see its "
+       "train_ids)"},
+      {OnnxYaml("num_classes: 3\n"), "key 'num_classes' appears twice in one mapping"},
   };
   for (const Case& c : cases) {
     const std::string message = ReadError(Yaml(c.yaml));
@@ -125,8 +136,12 @@ TEST_F(SegmentationModelTest, MissingModelFileNamesBothPlacesLookedAt) {
       << message;
   EXPECT_NE(message.find((SharedDataDir() / "models/none.onnx").string()), std::string::npos)
       << message;
-  EXPECT_NE(ReadError(dir_.File("absent.yaml")).find("segmentation model file not found"),
-            std::string::npos);
+  EXPECT_NE(
+      ReadError(dir_.File("absent.yaml")).find("cannot open segmentation model file: no such file"),
+      std::string::npos);
+  EXPECT_NE(
+      ReadError(dir_.path().string()).find("cannot open segmentation model file: is a directory"),
+      std::string::npos);
 }
 
 TEST_F(SegmentationModelTest, RelativeModelFilesAreLookedUpBesideTheYamlThenInTheSharedFolder) {

@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "roadscale/util/error.h"
+#include "roadscale/util/yaml_file.h"
 
 namespace roadscale::synth {
 namespace {
@@ -267,14 +268,7 @@ SceneOptions LoadSceneOptions(const std::string& preset, const std::string& yaml
     options.Check();
     return options;
   }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::BadFile&) {
-    ThrowFileError(yaml_path, "cannot open scene file");
-  } catch (const YAML::Exception& e) {
-    ThrowFileError(yaml_path, e.mark.is_null() ? 0 : e.mark.line + 1, "invalid YAML: " + e.msg);
-  }
+  YAML::Node root = LoadYamlFile(yaml_path, "scene file");
   if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   Block top(root, yaml_path, "");
   std::string file_preset;

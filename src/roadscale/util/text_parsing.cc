@@ -21,6 +21,21 @@ bool IsBlankOrComment(std::string_view line) {
   return true;
 }
 
+void ForEachLine(std::string_view text,
+                 const std::function<void(std::string_view line, int line_number)>& visit) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+    text.remove_prefix(kByteOrderMark.size());
+  }
+  int line_number = 1;
+  while (!text.empty()) {
+    const size_t end = text.find('\n');
+    visit(text.substr(0, end), line_number++);
+    if (end == std::string_view::npos) break;
+    text.remove_prefix(end + 1);
+  }
+}
+
 std::vector<double> ParseNumbers(std::string_view text, const std::string& path, int line_number) {
   std::vector<double> numbers;
   size_t pos = 0;

@@ -34,5 +34,23 @@ TEST(TextParsing, BlankAndCommentLines) {
   EXPECT_FALSE(IsBlankOrComment(" 1 2 # trailing"));
 }
 
+TEST(TextParsing, ForEachLineNumbersLinesAndSkipsAByteOrderMark) {
+  std::vector<std::string> lines;
+  std::vector<int> numbers;
+  const auto collect = [&](std::string_view line, int number) {
+    lines.emplace_back(line);
+    numbers.push_back(number);
+  };
+  ForEachLine("\xEF\xBB\xBFP0: 1\n\nlast", collect);
+  EXPECT_EQ(lines, (std::vector<std::string>{"P0: 1", "", "last"}));
+  EXPECT_EQ(numbers, (std::vector<int>{1, 2, 3}));
+  lines.clear();
+  ForEachLine("a\r\nb\n", collect);
+  EXPECT_EQ(lines, (std::vector<std::string>{"a\r", "b"}));
+  lines.clear();
+  ForEachLine("", collect);
+  EXPECT_TRUE(lines.empty());
+}
+
 }  // namespace
 }  // namespace roadscale
