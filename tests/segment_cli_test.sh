@@ -30,6 +30,11 @@ done
 cmp -s "$out/net/labels/000010.png" "$out/net/labels/000011.png" || fail "frame 11 not reused"
 cmp -s "$out/net/labels/000011.png" "$out/net/labels/000012.png" && fail "frame 12 not fresh"
 
+# An image folder needs no camera YAML here: the size comes from the images. Same labels.
+"$roadscale" segment --images "$sequence/image_0" --model \
+  "$source_dir/config/models/espnetv2_640x192.yaml" --out "$out/folder" --frames 10:12
+cmp -s "$out/net/labels/000010.png" "$out/folder/labels/000010.png" || fail "--images labels differ"
+
 # The labels read back through the label-image backend are the same labels.
 "$roadscale" segment --kitti "$sequence" --model "$out/net/labels.yaml" --out "$out/back" \
   --frames 10:14

@@ -65,6 +65,7 @@ void RunSegment(const SegmentArguments& arguments) {
   // Colour when the input has it: the networks see far more in colour (docs/benchmarks.md).
   source_options.color = true;
   source_options.frames = ParseFrameRange(arguments.frames);
+  source_options.image_size_only = true;
   std::unique_ptr<ImageFileSequence> source;
   if (!arguments.kitti.empty()) {
     source = std::make_unique<KittiSequence>(source_options);
@@ -144,8 +145,8 @@ void RegisterSegmentCommand(CLI::App& app) {
       "--images", arguments->images, "folder of images (*.png, *.jpg), read in natural order");
   kitti->excludes(images);
   command->add_option("--camera", arguments->camera,
-                      "camera YAML (Camera: block with the image width and height); required "
-                      "with --images");
+                      "camera YAML (Camera: block); optional: with --images the image size "
+                      "comes from the first image, and a camera YAML checks it");
   command
       ->add_option("--kitti-camera", arguments->kitti_camera,
                    "KITTI camera 0..3 (image_N/); -1: image_0 when present, else image_2")
@@ -173,9 +174,6 @@ void RegisterSegmentCommand(CLI::App& app) {
   command->callback([arguments, kitti, images]() {
     if (kitti->count() == 0 && images->count() == 0) {
       throw Error("roadscale segment needs --kitti SEQ_DIR or --images DIR");
-    }
-    if (images->count() > 0 && arguments->camera.empty()) {
-      throw Error("roadscale segment --images needs --camera CAMERA.yaml (the image size)");
     }
     RunSegment(*arguments);
   });

@@ -379,7 +379,8 @@ ImageFolder::ImageFolder(const FrameSourceOptions& options) {
   options.Check();
   folder_ = options.input;
   if (!fs::is_directory(folder_)) ThrowFileError(folder_, "image folder not found");
-  camera_ = ReadCameraForInput(options, "an image folder");
+  const bool size_from_first_image = options.image_size_only && options.camera_yaml.empty();
+  if (!size_from_first_image) camera_ = ReadCameraForInput(options, "an image folder");
   color_ = options.color;
 
   std::vector<std::string> names;
@@ -430,6 +431,14 @@ ImageFolder::ImageFolder(const FrameSourceOptions& options) {
 
   const std::string first_path = (fs::path(folder_) / names.front()).string();
   const cv::Mat first = LoadImage(first_path, false, 0, 0);
+  if (size_from_first_image) {
+    camera_.camera.width = first.cols;
+    camera_.camera.height = first.rows;
+    camera_.camera.fx = camera_.camera.fy = first.cols;
+    camera_.camera.cx = (first.cols - 1) / 2.0;
+    camera_.camera.cy = (first.rows - 1) / 2.0;
+    if (options.h0) camera_.h0 = *options.h0;
+  }
   if (first.cols != camera_.camera.width || first.rows != camera_.camera.height) {
     ThrowFileError(first_path, "image is " + SizeText(first.cols, first.rows) + " but " +
                                    options.camera_yaml + " says " +

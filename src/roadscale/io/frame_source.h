@@ -80,6 +80,10 @@ struct FrameSourceOptions {
   // Which frames to deliver. An end beyond the last frame is clamped (with a note); a begin
   // at or beyond it throws Error.
   FrameRange frames;
+  // For commands that need the image size only (segment): an image folder without
+  // camera_yaml takes its size from its first image, with nominal intrinsics (fx = fy =
+  // width, principal point at the centre) that nothing may use for geometry.
+  bool image_size_only = false;
 
   // Throws Error on an empty input, an unknown kitti_camera, a non-positive h0, or an
   // empty frame range.
@@ -201,7 +205,8 @@ class KittiSequence : public ImageFileSequence {
 // (0 for the first image, whatever its name).
 class ImageFolder : public ImageFileSequence {
  public:
-  // Uses options.input (the folder), camera_yaml (required), color, h0 and frames. Throws
+  // Uses options.input (the folder), camera_yaml (required unless image_size_only), color,
+  // h0 and frames. Throws
   // Error on a missing folder or camera YAML, no images, a gap in the numbering, a short
   // times.txt, or a first image whose size differs from the YAML's width and height.
   explicit ImageFolder(const FrameSourceOptions& options);

@@ -425,6 +425,19 @@ TEST(ImageFolder, GapInNumberedFramesNamesTheMissingFile) {
   EXPECT_THAT(ErrorOf([&] { ImageFolder s(options); }), HasSubstr(folder + "/0003.png: missing"));
 }
 
+TEST(ImageFolder, ImageSizeOnlyTakesTheSizeFromTheFirstImage) {
+  TempDir dir;
+  const std::string folder = dir.File("frames");
+  for (int i = 1; i <= 2; ++i) WritePng(folder + "/000" + std::to_string(i) + ".png", i);
+  FrameSourceOptions options = OptionsFor(folder);
+  EXPECT_THAT(ErrorOf([&] { ImageFolder s(options); }), HasSubstr("needs a camera YAML"));
+  options.image_size_only = true;
+  const ImageFolder source(options);
+  EXPECT_EQ(source.camera().camera.width, kWidth);
+  EXPECT_EQ(source.camera().camera.height, kHeight);
+  EXPECT_EQ(source.size(), 2u);
+}
+
 TEST(ImageFolder, NeedsAMatchingCameraYaml) {
   TempDir dir;
   const std::string folder = dir.File("frames");
