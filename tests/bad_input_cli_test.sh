@@ -257,8 +257,9 @@ if [[ "$mode" == "runs" ]]; then
   done
 
   # SIGTERM and SIGINT part way: no road plane ever (the frames wait for the first scale), and
-  # the signal must still write every frame read so far.
-  printf 'Scale:\n  ransac_min_points: 100000\n' >"$out/noroad.yaml"
+  # the signal must still write every frame read so far. The frame-to-frame host writes each
+  # scaled frame at once, so the wait for the first row below works.
+  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
   for signal in TERM INT; do
     cases=$((cases + 1))
     run_dir="$out/signal_$signal"
