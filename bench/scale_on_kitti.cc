@@ -480,7 +480,6 @@ void Diagnose(const std::vector<PairData>& pairs, const PinholeCamera& camera,
 std::vector<Configuration> Configurations() {
   using Options = ScaleEstimatorOptions;
   const auto none = [](Options*) {};
-  const auto beyond = [](Options* o) { o->min_angle_below_horizon_deg = 3.0; };
   std::vector<Configuration> list;
   for (MaskKind mask : {MaskKind::kNone, MaskKind::kCorridor, MaskKind::kSemantic}) {
     const std::string suffix = mask == MaskKind::kNone       ? ""
@@ -496,69 +495,6 @@ std::vector<Configuration> Configurations() {
                     },
                     mask});
     list.push_back({"RM (no vote)" + suffix, [](Options* o) { o->use_depth_vote = false; }, mask});
-    list.push_back({"beyond: 3 deg below horizon" + suffix, beyond, mask});
-    if (mask != MaskKind::kNone) {
-      for (int margin : {7, 10, 13}) {
-        list.push_back({"beyond: mask margin " + std::to_string(margin) + " px" + suffix,
-                        [margin](Options* o) { o->road_mask_margin_px = margin; }, mask});
-      }
-    }
-    for (double width : {2.1, 3.0, 3.9}) {
-      for (double distance : {14.0, 20.0, 26.0}) {
-        if (width != 3.0 && distance != 20.0) continue;
-        char name[96];
-        std::snprintf(name, sizeof(name), "beyond: corridor %.1f m x %.0f m%s", width, distance,
-                      suffix.c_str());
-        list.push_back({name,
-                        [width, distance](Options* o) {
-                          o->corridor.enabled = true;
-                          o->corridor.half_width_m = width;
-                          o->corridor.max_distance_m = distance;
-                        },
-                        mask});
-      }
-    }
-    list.push_back({"beyond: corridor straight" + suffix,
-                    [](Options* o) {
-                      o->corridor.enabled = true;
-                      o->corridor.follow_turn = false;
-                    },
-                    mask});
-    list.push_back({"beyond: inverse-depth refit" + suffix,
-                    [](Options* o) { o->inverse_depth_refit = true; }, mask});
-    list.push_back({"beyond: inverse-depth refit, unweighted" + suffix,
-                    [](Options* o) {
-                      o->inverse_depth_refit = true;
-                      o->inverse_depth_weighting = false;
-                    },
-                    mask});
-    list.push_back({"beyond: corridor + inverse-depth refit" + suffix,
-                    [](Options* o) {
-                      o->corridor.enabled = true;
-                      o->inverse_depth_refit = true;
-                    },
-                    mask});
-    if (mask != MaskKind::kNone) {
-      list.push_back({"beyond: margin 10 px + inverse-depth refit" + suffix,
-                      [](Options* o) {
-                        o->road_mask_margin_px = 10;
-                        o->inverse_depth_refit = true;
-                      },
-                      mask});
-      list.push_back({"beyond: margin + corridor + inverse-depth" + suffix,
-                      [](Options* o) {
-                        o->road_mask_margin_px = 10;
-                        o->corridor.enabled = true;
-                        o->inverse_depth_refit = true;
-                      },
-                      mask});
-      list.push_back({"beyond: margin 10 px + corridor" + suffix,
-                      [](Options* o) {
-                        o->road_mask_margin_px = 10;
-                        o->corridor.enabled = true;
-                      },
-                      mask});
-    }
   }
   const MaskKind corridor = MaskKind::kCorridor;
   list.push_back({"vote per edge, mask",

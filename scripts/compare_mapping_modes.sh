@@ -32,7 +32,8 @@ rows = list(csv.DictReader(open(run + "/frames.csv")))
 ok = sum(r["status"] == "ok" for r in rows) / len(rows)
 fps = next((l.split(",")[1].split()[0] for l in open(run + ".log") if l.startswith("Wall clock")), "?")
 t = m["kitti"]["t_err_pct"]
-print(f"{preset:<12} {seed:>4} {mode:<15} {t if t is None else round(t, 3):>8} "
+t = "-" if t is None else f"{t:.3f}"  # no 100 m segment in a short or slow drive
+print(f"{preset:<12} {seed:>4} {mode:<15} {t:>8} "
       f"{m['ate_m']['se3']:8.3f} {m['length_ratio']:8.4f} {100 * ok:7.1f} {fps:>7}")
 PY
     done

@@ -1,5 +1,6 @@
 #include "roadscale/pipeline/run_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -102,7 +103,9 @@ std::vector<FrameSeries> RunFrameSeries(const RunReportData& data) {
     return values;
   };
   std::vector<FrameSeries> series;
-  const bool road = !columns.empty();
+  // The keyframe back end's columns (MappedFrameCsvHeader) or the road scale source's.
+  const bool keyframe_mode = std::find(columns.begin(), columns.end(), "keyframe") != columns.end();
+  const bool road = !columns.empty() && !keyframe_mode;
   if (road) {
     series.push_back({"scale_raw", FrameSeriesKind::kScale, column("road_raw_scale")});
     series.push_back({"scale_filtered", FrameSeriesKind::kScale, column("road_scale")});
@@ -119,6 +122,12 @@ std::vector<FrameSeries> RunFrameSeries(const RunReportData& data) {
                      .norm();
     }
     series.push_back({"scale_true", FrameSeriesKind::kScale, truth});
+  }
+  if (keyframe_mode) {
+    series.push_back({"landmarks_seen", FrameSeriesKind::kCount, column("landmarks_seen")});
+    series.push_back(
+        {"window_road_landmarks", FrameSeriesKind::kCount, column("window_road_landmarks")});
+    series.push_back({"road_points_marked", FrameSeriesKind::kCount, column("road_points")});
   }
   if (road) {
     series.push_back({"points_triangulated", FrameSeriesKind::kCount, column("road_triangulated")});
@@ -140,6 +149,18 @@ std::vector<FrameSeries> RunFrameSeries(const RunReportData& data) {
                     per_frame([](const FrameRecord& r) { return r.motion_ms; })});
   series.push_back({"ms_scale", FrameSeriesKind::kMilliseconds,
                     per_frame([](const FrameRecord& r) { return r.scale_ms; })});
+  if (keyframe_mode) {
+    // NaN in the frames that are no keyframes: the timing table then gives the adjustment's
+    // time per keyframe.
+    std::vector<double> bundle_adjustment = column("ba_ms");
+    const std::vector<double> keyframe = column("keyframe");
+    for (size_t i = 0; i < n; ++i) {
+      if (keyframe[i] != 1.0) bundle_adjustment[i] = kNaN;
+    }
+    series.push_back({"ms_bundle_adjustment", FrameSeriesKind::kMilliseconds, bundle_adjustment});
+    series.push_back({"keyframe", FrameSeriesKind::kOther, keyframe});
+    series.push_back({"pair_scale", FrameSeriesKind::kOther, column("pair_scale")});
+  }
   if (road) series.push_back({"plane_h", FrameSeriesKind::kOther, column("road_plane_h")});
   series.push_back({"tracks", FrameSeriesKind::kOther,
                     per_frame([](const FrameRecord& r) { return double(r.num_tracks); })});

@@ -81,5 +81,34 @@ TEST(RunReport, SeriesTakeTheScaleSourcesColumnsAndTheTrueStepLength) {
   EXPECT_EQ(find("scale_true").kind, FrameSeriesKind::kScale);
 }
 
+TEST(RunReport, KeyframeModeSeriesAreTheStepsTheMapAndTheAdjustmentPerKeyframe) {
+  RunReportData data;
+  data.records = Records({"first", "ok", "ok"});
+  data.records[1].step_length_m = 0.9;
+  data.records[2].step_length_m = 1.1;
+  data.records[1].scale_valid = data.records[2].scale_valid = true;
+  data.scale_diagnostics_header = "keyframe,landmarks_seen,ba_ms,window_road_landmarks";
+  data.records[0].scale_diagnostics_csv = "1,0,0,0";
+  data.records[1].scale_diagnostics_csv = "0,150,0,40";
+  data.records[2].scale_diagnostics_csv = "1,170,35.5,42";
+  const std::vector<FrameSeries> series = RunFrameSeries(data);
+  const auto find = [&](const std::string& name) -> const FrameSeries* {
+    for (const FrameSeries& s : series) {
+      if (s.name == name) return &s;
+    }
+    return nullptr;
+  };
+  EXPECT_EQ(find("scale_raw"), nullptr);  // the per-pair scale's columns are not there
+  ASSERT_NE(find("scale_filtered"), nullptr);
+  EXPECT_EQ(find("scale_filtered")->values[2], 1.1);
+  ASSERT_NE(find("landmarks_seen"), nullptr);
+  EXPECT_EQ(find("landmarks_seen")->values[1], 150);
+  ASSERT_NE(find("ms_bundle_adjustment"), nullptr);
+  EXPECT_TRUE(std::isnan(find("ms_bundle_adjustment")->values[1]));  // not a keyframe
+  EXPECT_EQ(find("ms_bundle_adjustment")->values[2], 35.5);
+  ASSERT_NE(find("keyframe"), nullptr);
+  EXPECT_EQ(find("keyframe")->values[0], 1.0);
+}
+
 }  // namespace
 }  // namespace roadscale

@@ -23,18 +23,16 @@ void CheckSameSize(size_t num_pixels, size_t num_points, const char* what) {
 std::vector<int> PreselectRoadCandidates(const std::vector<Eigen::Vector2d>& pixels,
                                          const std::vector<Eigen::Vector3d>& points,
                                          const cv::Mat& road_mask,
-                                         const std::optional<Eigen::Vector3d>& road_normal,
-                                         double min_angle_below_horizon_rad) {
+                                         const std::optional<Eigen::Vector3d>& road_normal) {
   CheckSameSize(pixels.size(), points.size(), "road candidates");
   if (!road_mask.empty() && road_mask.type() != CV_8UC1) {
     throw Error("road mask: expected a one-channel 8-bit image (CV_8UC1), got type " +
                 std::to_string(road_mask.type()));
   }
-  const double min_sine = std::sin(min_angle_below_horizon_rad);
   std::vector<int> selected;
   selected.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    if (road_normal && !(road_normal->dot(points[i]) > min_sine * points[i].norm())) continue;
+    if (road_normal && !(road_normal->dot(points[i]) > 0.0)) continue;
     if (!road_mask.empty()) {
       const double column = std::round(pixels[i].x());
       const double row = std::round(pixels[i].y());

@@ -14,18 +14,13 @@ namespace roadscale {
 
 // Lines 1-5 of Alg. 1 plus the horizon: the indices of the points that lie on road pixels of
 // `road_mask` (CV_8U, non-zero = road, the previous frame's; empty = no segmentation, every
-// pixel passes) and, when `road_normal` is given, below the horizon: their viewing ray points
-// more than `min_angle_below_horizon_rad` below the plane through the camera parallel to the
-// expected road (for 0: road_normal · X > 0, see road_plane.h). A margin below the horizon
-// keeps only road within h / tan(margin) of the camera; it depends on the pixel alone, not on
-// the noisy depth, so it drops far points without favouring those triangulated too near.
-// Pixels are rounded to the nearest mask cell; pixels outside the mask are not road. Throws
-// Error when a non-empty mask is not CV_8U with one channel.
+// pixel passes) and, when `road_normal` is given, below the horizon: road_normal · X > 0
+// (see road_plane.h). Pixels are rounded to the nearest mask cell; pixels outside the mask are not
+// road. Throws Error when a non-empty mask is not CV_8U with one channel.
 std::vector<int> PreselectRoadCandidates(const std::vector<Eigen::Vector2d>& pixels,
                                          const std::vector<Eigen::Vector3d>& points,
                                          const cv::Mat& road_mask,
-                                         const std::optional<Eigen::Vector3d>& road_normal,
-                                         double min_angle_below_horizon_rad = 0.0);
+                                         const std::optional<Eigen::Vector3d>& road_normal);
 
 struct DepthConsistencyVoteOptions {
   // Which edges vote. Alg. 1 loops over the triangles and over each triangle's edges, so an

@@ -18,7 +18,8 @@ namespace roadscale {
 // refit minimises the distances between these predictions and the tracked current pixels of
 // RANSAC's inliers (robust Huber weights), which is the maximum-likelihood plane under
 // pixel noise: triangulated points carry their error along the viewing rays, growing with the
-// square of the depth, which tilts a least-squares plane in 3-D (inverse_depth_plane.h).
+// square of the depth, which tilts a least-squares plane in 3-D (the inverse-depth refit measured
+// in docs/benchmarks.md).
 //
 // With `refine_rotation` the rotation is refined with the plane (three more unknowns). For a
 // car driving forward the essential matrix hardly tells a small pitch rotation from a small

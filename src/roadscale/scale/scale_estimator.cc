@@ -32,12 +32,6 @@ std::vector<int> Compose(const std::vector<int>& indices, const std::vector<int>
 
 void ScaleEstimatorOptions::Check() const {
   CheckCameraHeight(camera_height, "scale.camera_height");
-  CheckOption(std::isfinite(min_angle_below_horizon_deg) && min_angle_below_horizon_deg >= 0.0 &&
-                  min_angle_below_horizon_deg < 45.0,
-              "scale.min_angle_below_horizon_deg", "must be in [0, 45) degrees");
-  CheckOption(road_mask_margin_px >= 0 && road_mask_margin_px <= 100, "scale.road_mask_margin_px",
-              "must be in [0, 100] pixels");
-  corridor.Check();
   homography.Check();
   triangulation.Check();
   depth_vote.Check();
@@ -117,33 +111,10 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
   const std::vector<Eigen::Vector2d> pixels = Gather(prev_pixels, triangulated.track_indices);
 
   // `selection` indexes triangulated.points throughout.
-  cv::Mat mask;
   estimate.used_road_mask = options_.use_segmentation && !prev_road_mask.empty();
-  if (estimate.used_road_mask) {
-    if (options_.road_mask_margin_px > 0 && prev_road_mask.type() == CV_8UC1) {
-      // Into a new image: the caller's mask stays as it is.
-      const int side = 2 * options_.road_mask_margin_px + 1;
-      cv::erode(prev_road_mask, mask, cv::getStructuringElement(cv::MORPH_RECT, {side, side}));
-    } else {
-      mask = prev_road_mask;
-    }
-  }
   std::vector<int> selection = PreselectRoadCandidates(
-      pixels, triangulated.points, mask, options_.use_horizon ? road_normal : std::nullopt,
-      options_.min_angle_below_horizon_deg * M_PI / 180.0);
-  if (options_.corridor.enabled) {
-    std::vector<bool> in_corridor(pixels.size(), false);
-    for (int index :
-         SelectRoadCorridor(pixels, camera_, cur_from_prev, *road_normal, options_.camera_height,
-                            has_model_ ? last_raw_scale_ : 0.0, options_.corridor)) {
-      in_corridor[index] = true;
-    }
-    std::vector<int> kept;
-    for (int index : selection) {
-      if (in_corridor[index]) kept.push_back(index);
-    }
-    selection = std::move(kept);
-  }
+      pixels, triangulated.points, estimate.used_road_mask ? prev_road_mask : cv::Mat(),
+      options_.use_horizon ? road_normal : std::nullopt);
   estimate.num_preselected = static_cast<int>(selection.size());
 
   if (options_.use_depth_vote) {
@@ -173,13 +144,6 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
   }
 
   Plane plane = fit.plane;
-  if (options_.inverse_depth_refit) {
-    const std::optional<Plane> refit =
-        FitPlaneInverseDepth(Gather(triangulated.points, selection), fit.inliers, cur_from_prev,
-                             *road_normal, options_.inverse_depth_weighting);
-    if (!refit) return finish_held(ScaleStatus::kHeldDegenerate);
-    plane = *refit;
-  }
   const std::vector<int> inliers = Compose(selection, fit.inliers);  // into triangulated
   if (options_.homography_refit) {
     const std::optional<RoadHomographyRefit> refit =

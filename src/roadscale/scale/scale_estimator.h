@@ -8,8 +8,6 @@
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/scale/depth_consistency_vote.h"
-#include "roadscale/scale/inverse_depth_plane.h"
-#include "roadscale/scale/road_corridor.h"
 #include "roadscale/scale/road_homography_refit.h"
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane.h"
@@ -29,22 +27,6 @@ struct ScaleEstimatorOptions {
   double camera_height = 1.65;
 
   bool use_segmentation = true;  // Alg. 1 lines 1-5: keep road-mask pixels (when given)
-  // Beyond the paper (0 = the paper): a track is a road candidate only when every mask pixel
-  // within this many pixels of it (a square of side 2 m + 1) is road. KLT follows its whole
-  // window, not the centre pixel: a road pixel whose window straddles a car's edge or a kerb
-  // moves with the occluding object. On the rendered urban sequence such road tracks are off
-  // by 0.5-2 px at 9-25 m, those with an all-road window by 0.03 px: their depths come out
-  // 7-20 % too near, tilt the plane up and make the scale too small. 10 = half of a 21 x 21
-  // KLT window (the frontend's and the benchmark's).
-  int road_mask_margin_px = 0;
-  // Beyond the paper: only road points in the corridor ahead of the car (road_corridor.h).
-  RoadCorridorOptions corridor;
-  // Beyond the paper (false = the paper's least-squares plane): refit the plane on RANSAC's
-  // inliers in inverse depth, weighted by each point's depth precision
-  // (inverse_depth_plane.h): the total-least-squares plane on triangulated points is tilted by
-  // their errors along the viewing rays.
-  bool inverse_depth_refit = false;
-  bool inverse_depth_weighting = true;  // with inverse_depth_refit
   // Beyond the paper, ON by default (false = the paper's least-squares plane): refit the
   // plane on RANSAC's inliers in pixels, through the plane-induced homography, with its normal
   // perpendicular to the direction of travel (road_homography_refit.h). It halves the
@@ -53,11 +35,7 @@ struct ScaleEstimatorOptions {
   // 2.29 % -> 0.78 %); docs/benchmarks.md, "Scale variants in the full system".
   bool homography_refit = true;
   RoadHomographyRefitOptions homography;
-  bool use_horizon = true;  // keep points below the horizon only
-  // Beyond the paper (0 = the paper): keep only points whose viewing ray is this far below
-  // the horizon, i.e. road nearer than h0 / tan(angle) (3 deg: about 31 m at 1.65 m). Far road
-  // points have little parallax: their depths are noisy and biased.
-  double min_angle_below_horizon_deg = 0.0;
+  bool use_horizon = true;           // keep points below the horizon only
   bool use_depth_vote = true;        // Alg. 1: the depth-consistency vote
   bool use_road_model_check = true;  // Alg. 2: triangles parallel to the expected road
   bool use_filter = true;            // eqs. (14)-(16): the mixed filter
@@ -98,7 +76,7 @@ struct ScaleEstimate {
   int num_behind_camera = 0;
   int num_small_parallax = 0;
   int num_large_reprojection_error = 0;
-  int num_preselected = 0;       // road mask + horizon (+ corridor)
+  int num_preselected = 0;       // road mask + horizon
   int num_after_vote = 0;        // Alg. 1
   int num_after_road_model = 0;  // Alg. 2
   int num_ransac_inliers = 0;
