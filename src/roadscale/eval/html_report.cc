@@ -379,7 +379,8 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
 
   void TrajectorySection() {
     html_ += "<section>\n<h2>Trajectory</h2>\n<div class=\"columns\">\n<div>\n";
-    Figure(RenderTopViewSvg(input_.gt_world_from_cam, input_.est_world_from_cam, 700, 700),
+    Figure(RenderTopViewSvg(input_.gt_world_from_cam, input_.est_world_from_cam, 700, 700,
+                            input_.keyframes),
            "trajectory top view");
     if (!HasGroundTruth()) Note("No ground truth: the estimate alone is drawn.");
     if (Frames() <= 1) Note("One pose: the top view shows only the start.");

@@ -43,6 +43,9 @@ struct HtmlReportInput {
   // One per frame ("ok", "held", "stationary", ...), counted in order of first appearance;
   // may be empty.
   std::vector<std::string> frame_status;
+  // Frames that were keyframes of the run's map (indices into the estimate), marked on the
+  // top view; empty for the frame-to-frame host.
+  std::vector<size_t> keyframes;
   // The run's wall-clock time, for the end-to-end frame rate (stages overlap on threads, so
   // it is not the sum of the stage times).
   std::optional<double> wall_time_s;

@@ -212,7 +212,7 @@ void DrawPath(cairo_t* cr, const Axes& axes, const std::vector<Rigid3d>& poses,
 }
 
 void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rigid3d>& gt,
-                 const std::vector<Rigid3d>& est) {
+                 const std::vector<Rigid3d>& est, const std::vector<size_t>& keyframes) {
   Range x;
   Range z;
   for (const auto* poses : {&gt, &est}) {
@@ -237,6 +237,15 @@ void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rig
   DrawAxes(cr, axes, "x [m]", "z [m]", "Trajectory (top view)");
   DrawPath(cr, axes, gt, kGroundTruth);
   DrawPath(cr, axes, est, kEstimate);
+  SetColour(cr, kEstimate);
+  cairo_set_line_width(cr, 1.0);
+  for (size_t k : keyframes) {
+    if (k >= est.size()) continue;
+    const Eigen::Vector3d& centre = est[k].translation();
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, axes.X(centre.x()), axes.Y(centre.z()), 3.0, 0.0, 2.0 * M_PI);
+  }
+  cairo_stroke(cr);
   // Without ground truth the estimate's start is marked.
   const std::vector<Rigid3d>& first = gt.empty() ? est : gt;
   if (!first.empty()) {
@@ -248,6 +257,7 @@ void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rig
   std::vector<LegendEntry> legend;
   if (!gt.empty()) legend.push_back({"Ground truth", kGroundTruth});
   legend.push_back({"Estimate", kEstimate});
+  if (!keyframes.empty()) legend.push_back({"Keyframes (circles)", kEstimate});
   legend.push_back({"Start", kBlack, true});
   DrawLegend(cr, axes.right - 10.0, axes.top + 10.0, legend);
 }
@@ -533,7 +543,7 @@ std::vector<std::string> WriteEvaluationPlots(const std::string& directory,
   const std::vector<std::pair<std::string, std::pair<int, DrawFunction>>> figures = {
       {"trajectory_top_view",
        {800, [&](cairo_t* cr, double w,
-                 double h) { DrawTopView(cr, w, h, gt_world_from_cam, est_world_from_cam); }}},
+                 double h) { DrawTopView(cr, w, h, gt_world_from_cam, est_world_from_cam, {}); }}},
       {"t_err_vs_length",
        {500, [&](cairo_t* cr, double w, double h) { DrawErrorPlot(cr, w, h, kitti, true); }}},
       {"r_err_vs_length",
@@ -552,10 +562,10 @@ std::vector<std::string> WriteEvaluationPlots(const std::string& directory,
 }
 
 std::string RenderTopViewSvg(const std::vector<Rigid3d>& gt_world_from_cam,
-                             const std::vector<Rigid3d>& est_world_from_cam, int width,
-                             int height) {
+                             const std::vector<Rigid3d>& est_world_from_cam, int width, int height,
+                             const std::vector<size_t>& keyframes) {
   return RenderSvg("trajectory_top_view", width, height, [&](cairo_t* cr, double w, double h) {
-    DrawTopView(cr, w, h, gt_world_from_cam, est_world_from_cam);
+    DrawTopView(cr, w, h, gt_world_from_cam, est_world_from_cam, keyframes);
   });
 }
 

@@ -28,9 +28,10 @@ std::vector<std::string> WriteEvaluationPlots(const std::string& directory,
 
 // The top view above; `gt_world_from_cam` may be empty (no ground truth: the estimate alone,
 // its start marked). The two trajectories need not have the same number of poses.
+// `keyframes`: indices into the estimate drawn as small circles on it.
 std::string RenderTopViewSvg(const std::vector<Rigid3d>& gt_world_from_cam,
                              const std::vector<Rigid3d>& est_world_from_cam, int width = 800,
-                             int height = 800);
+                             int height = 800, const std::vector<size_t>& keyframes = {});
 
 enum class KittiErrorKind { kTranslation, kRotation };
 

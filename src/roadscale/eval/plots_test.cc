@@ -161,6 +161,21 @@ TEST(Plots, TopViewWithoutGroundTruthDrawsTheEstimate) {
   EXPECT_NE(RenderTopViewSvg({}, {Rigid3d::Identity()}).find("<svg"), std::string::npos);
 }
 
+TEST(Plots, TopViewMarksTheKeyframes) {
+  const std::vector<Rigid3d> est = testing::CurvyDrive(100, 1.0);
+  const std::string plain = RenderTopViewSvg(est, est, 400, 400);
+  const std::string marked = RenderTopViewSvg(est, est, 400, 400, {0, 10, 20, 30, 500});
+  // Two more blue strokes: the circles (the index beyond the estimate skipped) and their
+  // legend entry.
+  const auto count = [](const std::string& svg, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1)) ++n;
+    return n;
+  };
+  const std::string blue = "stroke:rgb(10%,25%,85%)";
+  EXPECT_EQ(count(marked, blue), count(plain, blue) + 2);
+}
+
 // The `d` attribute of the first path whose style contains `style_part`.
 std::string PathData(const std::string& svg, const std::string& style_part) {
   const size_t style = svg.find(style_part);

@@ -198,7 +198,10 @@ std::vector<std::string> WriteRunReport(const std::string& out_dir, const RunRep
   if (evaluation) input.gt_world_from_cam = data.gt_world_from_cam;
   input.evaluation = evaluation;
   input.series = RunFrameSeries(data);
-  for (const FrameRecord& record : data.records) input.frame_status.push_back(record.status);
+  for (size_t i = 0; i < data.records.size(); ++i) {
+    input.frame_status.push_back(data.records[i].status);
+    if (data.records[i].keyframe) input.keyframes.push_back(i);
+  }
   input.wall_time_s = data.wall_time_s;
   const std::string path = (std::filesystem::path(out_dir) / "report.html").string();
   WriteHtmlReport(path, input);
