@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roadscale/geometry/camera_height.h"
+#include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
@@ -177,9 +178,11 @@ bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
          a.width == b.width && a.height == b.height;
 }
 
-// calib.txt has no camera height; see the KittiSequence comment for the order of the sources.
+// calib.txt has no camera height (see the KittiSequence comment for the order of the
+// sources) and no lens distortion (KITTI's are rectified images; a camera YAML can add one).
 double KittiCameraHeight(const FrameSourceOptions& options, const fs::path& sequence_dir,
-                         const PinholeCamera& calib_camera, std::vector<std::string>* notes) {
+                         const PinholeCamera& calib_camera, std::vector<double>* distortion,
+                         std::vector<std::string>* notes) {
   std::string yaml_path = options.camera_yaml;
   if (yaml_path.empty() && fs::exists(sequence_dir / "camera.yaml")) {
     yaml_path = (sequence_dir / "camera.yaml").string();
@@ -189,8 +192,9 @@ double KittiCameraHeight(const FrameSourceOptions& options, const fs::path& sequ
     yaml = ReadCameraYaml(yaml_path);
     if (!SameIntrinsics(yaml->camera, calib_camera)) {
       notes->push_back(yaml_path + " has other intrinsics than calib.txt: using calib.txt's, and " +
-                       "only the camera height from " + yaml_path);
+                       "only the camera height and lens distortion from " + yaml_path);
     }
+    *distortion = yaml->distortion;
   }
   if (options.h0) return *options.h0;
   if (yaml) return yaml->h0;
@@ -282,7 +286,14 @@ Frame ImageFileSequence::Read(size_t position) const {
   frame.timestamp = timestamps_[position];
   frame.path = paths_[position];
   frame.image = LoadImage(frame.path, color_, camera_.camera.width, camera_.camera.height);
+  if (undistorter_) frame.image = undistorter_->Undistort(frame.image);
   return frame;
+}
+
+void ImageFileSequence::UndistortWithCamerasLens() {
+  if (!camera_.distortion.empty()) {
+    undistorter_ = std::make_shared<const ImageUndistorter>(camera_.camera, camera_.distortion);
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -338,8 +349,9 @@ KittiSequence::KittiSequence(const FrameSourceOptions& options) {
   const cv::Mat first = LoadImage(FramePath(0), false, 0, 0);
   const std::string calib_path = (dir / "calib.txt").string();
   camera_.camera = ReadKittiCamera(calib_path, kitti_camera_, first.cols, first.rows);
-  camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &notes_);
+  camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &camera_.distortion, &notes_);
   camera_.Check();
+  UndistortWithCamerasLens();
   color_ = options.color;
 
   const std::vector<double> times =
@@ -444,6 +456,7 @@ ImageFolder::ImageFolder(const FrameSourceOptions& options) {
                                    options.camera_yaml + " says " +
                                    SizeText(camera_.camera.width, camera_.camera.height));
   }
+  UndistortWithCamerasLens();
 
   const std::vector<double> times =
       TimestampsFor((fs::path(folder_) / "times.txt").string(), total_images_, &notes_);
@@ -466,6 +479,7 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
   options.Check();
   CheckInputFile(path_, "video file");
   camera_ = ReadCameraForInput(options, "a video");
+  if (!camera_.distortion.empty()) undistorter_.emplace(camera_.camera, camera_.distortion);
   color_ = options.color;
   if (!capture_.open(path_) || !capture_.isOpened()) {
     ThrowFileError(path_, "cannot open video (unsupported container or codec, or not a video)");
@@ -552,6 +566,7 @@ bool VideoFile::Next(Frame* frame) {
                    "unexpected " + std::to_string(decoded.channels()) + "-channel video frame");
   }
   if (frame->image.depth() != CV_8U) ThrowFileError(frame_path, "video frame is not 8-bit");
+  if (undistorter_) frame->image = undistorter_->Undistort(frame->image);
   frame->index = index;
   frame->timestamp = timestamp;
   frame->path = frame_path;
