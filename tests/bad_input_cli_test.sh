@@ -195,6 +195,12 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       --sequential --out "$out/$fault.run"
     check_pose_rows "$out/$fault.run" 5
   done
+  s="$(copy_sequence bad_label)"
+  head -c 200 "$seq/semantic/000003.png" >"$s/semantic/000003.png"
+  expect_error 1 "semantic/000003\.png: cannot decode label image \(truncated in chunk IDAT\)" \
+    "$roadscale" run --kitti "$s" --labels "$s/semantic" --scale oracle --sequential \
+    --out "$out/bad_label.run"
+  check_pose_rows "$out/bad_label.run" 3
   if $can_deny; then
     s="$(copy_sequence denied)"
     chmod 000 "$s/image_0/000005.png"

@@ -10,9 +10,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roadscale/geometry/camera_height.h"
+#include "roadscale/io/image_file.h"
 #include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
-#include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -89,18 +89,7 @@ bool NaturalLess(const std::string& a, const std::string& b) {
 // Decodes one image; the only place frames are read, so every source reports the same
 // errors. `expected_width` 0 skips the size check (used to learn the first image's size).
 cv::Mat LoadImage(const std::string& path, bool color, int expected_width, int expected_height) {
-  // Read here rather than by cv::imread: the reason a file cannot be read (missing, a
-  // directory, permission denied) is named, and a truncated PNG is found before libpng and
-  // OpenCV print their own lines about it.
-  const std::string bytes = ReadInputFile(path, "image");
-  if (bytes.empty()) ThrowFileError(path, "cannot decode image (the file is empty)");
-  const std::string problem = PngStructureProblem(bytes);
-  if (!problem.empty()) ThrowFileError(path, "cannot decode image (" + problem + ")");
-  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-  cv::Mat image = cv::imdecode(buffer, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE);
-  if (image.empty()) {
-    ThrowFileError(path, "cannot decode image (corrupt, truncated or not an image)");
-  }
+  cv::Mat image = ReadImageFile(path, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE, "image");
   if (expected_width > 0 && (image.cols != expected_width || image.rows != expected_height)) {
     ThrowFileError(path, "image is " + SizeText(image.cols, image.rows) + " but the sequence's " +
                              "first frame and camera are " +
