@@ -227,6 +227,14 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       "${as_user[@]}" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
       --out "$out/read_only"
   fi
+  expect_error 1 "loop_a: too many levels of symbolic links" \
+    "$roadscale" run --kitti "$out/loop_a" --no-segmentation --out "$out/r"
+  if $can_deny; then
+    mkdir -m 700 "$out/closed_folder"
+    cp "$seq/image_0/000000.png" "$out/closed_folder/"
+    expect_error 1 "closed_folder: permission denied" "${as_user[@]}" "$roadscale" run \
+      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation --out "$out/r"
+  fi
   mkdir "$out/no_images"
   expect_error 1 "no_images: no images" "$roadscale" run --images "$out/no_images" --camera "$seq/camera.yaml" \
     --no-segmentation --out "$out/r"
