@@ -6,6 +6,10 @@ function(roadscale_set_compile_options target)
                                              -fno-sanitize-recover=undefined)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(ROADSCALE_FUZZ)
+    # Coverage feedback for libFuzzer in everything the fuzz targets call.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
 endfunction()
 
 # roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data])

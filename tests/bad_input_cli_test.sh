@@ -144,6 +144,11 @@ if [[ "$mode" == "files" ]]; then
     printf 'backend: onnx\nfile: net.onnx\ninput_size: [%s]\nchannel_order: rgb\nnum_classes: 20\n%s' \
       "$2" "$3" >"$out/$1"
   }
+  printf 'Scale:\n  filter_window: [3\n' >"$out/syntax.yaml"
+  expect_error 1 "syntax\.yaml:[0-9]+: invalid YAML" run_kitti --config "$out/syntax.yaml" --out "$out/r"
+  model garbage.yaml "64, 32" ""
+  expect_error 1 "net\.onnx: OpenCV DNN cannot load" \
+    "$roadscale" run --kitti "$seq" --model "$out/garbage.yaml" --out "$out/r"
   model ids.yaml "64, 32" $'road_ids: [25]\n'
   expect_error 1 "ids\.yaml:6: 'road_ids' holds 25, a train id the network never outputs" \
     "$roadscale" run --kitti "$seq" --model "$out/ids.yaml" --out "$out/r"
@@ -163,6 +168,14 @@ if [[ "$mode" == "files" ]]; then
   s="$(copy_sequence times_dir)"
   rm "$s/times.txt" && mkdir "$s/times.txt"
   expect_error 1 "times\.txt: cannot open timestamps file: is a directory" \
+    "$roadscale" run --kitti "$s" --no-segmentation --out "$out/r"
+  s="$(copy_sequence short_calib)"
+  sed -i '1s/ [^ ]*$//' "$s/calib.txt"
+  expect_error 1 "calib\.txt:1: expected 12 numbers \(a row-major 3x4 matrix\) after 'P0:', found 11" \
+    "$roadscale" run --kitti "$s" --no-segmentation --out "$out/r"
+  s="$(copy_sequence backwards_times)"
+  sed -i '4s/.*/0.0/' "$s/times.txt"
+  expect_error 1 "times\.txt:4: timestamps must increase" \
     "$roadscale" run --kitti "$s" --no-segmentation --out "$out/r"
   s="$(copy_sequence bom)"
   { printf '\xef\xbb\xbf'; cat "$seq/calib.txt"; } >"$s/calib.txt"
@@ -195,6 +208,12 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       --sequential --out "$out/$fault.run"
     check_pose_rows "$out/$fault.run" 5
   done
+  s="$(copy_sequence bad_label)"
+  head -c 200 "$seq/semantic/000003.png" >"$s/semantic/000003.png"
+  expect_error 1 "semantic/000003\.png: cannot decode label image \(truncated in chunk IDAT\)" \
+    "$roadscale" run --kitti "$s" --labels "$s/semantic" --scale oracle --sequential \
+    --out "$out/bad_label.run"
+  check_pose_rows "$out/bad_label.run" 3
   if $can_deny; then
     s="$(copy_sequence denied)"
     chmod 000 "$s/image_0/000005.png"
@@ -208,12 +227,34 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       "${as_user[@]}" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
       --out "$out/read_only"
   fi
+  expect_error 1 "loop_a: too many levels of symbolic links" \
+    "$roadscale" run --kitti "$out/loop_a" --no-segmentation --out "$out/r"
+  if $can_deny; then
+    mkdir -m 700 "$out/closed_folder"
+    cp "$seq/image_0/000000.png" "$out/closed_folder/"
+    expect_error 1 "closed_folder: permission denied" "${as_user[@]}" "$roadscale" run \
+      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation --out "$out/r"
+  fi
   mkdir "$out/no_images"
   expect_error 1 "no_images: no images" "$roadscale" run --images "$out/no_images" --camera "$seq/camera.yaml" \
     --no-segmentation --out "$out/r"
   expect_error 1 "a_dir: cannot open video file: is a directory" \
     "$roadscale" run --video "$out/a_dir" --camera "$seq/camera.yaml" --no-segmentation \
     --out "$out/r"
+  # A full disk, simulated by a 4 KiB file size limit (its signal ignored, so that writes
+  # fail): one line naming the file, and every file holds whole rows only.
+  full_disk() { (trap '' XFSZ && ulimit -f 4 && "$@"); }
+  expect_error 1 "full\.run/poses_kitti\.txt: write failed \(disk full" full_disk \
+    "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --sequential \
+    --out "$out/full.run"
+  n="$(rows "$out/full.run/poses_kitti.txt")"
+  [[ "$n" -ge 5 && "$(tail -c 1 "$out/full.run/poses_kitti.txt" | od -An -c | tr -d ' ')" == '\n' ]] ||
+    fail "full disk: $n rows or a partial last row"
+  check_pose_rows "$out/full.run" "$n"
+  expect_error 1 "full\.rescale/[a-z_]+\.(txt|csv): write failed \(disk full" full_disk \
+    "$roadscale" rescale --trajectory "$out/gt.txt" --kitti "$seq" --no-segmentation \
+    --out "$out/full.rescale"
+  awk 'NF != 12 { exit 1 }' "$out/full.rescale/poses_kitti.txt" || fail "full disk: a partial row"
   mkdir -p "$out/stuck/report.html/inside"
   expect_error 1 "stuck/report\.html: cannot remove the previous run's file" \
     "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/stuck"

@@ -1,4 +1,6 @@
+#include <cctype>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -29,6 +31,16 @@ std::string SubcommandNames(const CLI::App& app) {
     names += (names.empty() ? "" : ", ") + command->get_name();
   }
   return names;
+}
+
+// "PATH: too many levels of symbolic links", in the style of the other messages.
+std::string FileSystemErrorText(const std::filesystem::filesystem_error& error) {
+  std::string reason = error.code().message();
+  if (!reason.empty()) {
+    reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+  }
+  if (error.path1().empty()) return reason;
+  return error.path1().string() + ": " + reason;
 }
 
 }  // namespace
@@ -62,6 +74,11 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const roadscale::Error& e) {
     std::cerr << "roadscale: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the file system refuses (a symlink loop, a folder without permission) surfaces
+    // from any std::filesystem call on it: one line naming it, as every other input error.
+    std::cerr << "roadscale: error: " << FileSystemErrorText(e) << '\n';
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "roadscale: internal error: " << e.what() << '\n';

@@ -22,6 +22,7 @@
 #include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/line_file.h"
 
 #include "commands.h"
 #include "interrupt.h"
@@ -104,8 +105,7 @@ std::ofstream OpenOutput(const std::string& path) {
 
 // One row, flushed at once so that the rows stay intact whatever stops the run.
 void WriteRow(std::ofstream& file, const fs::path& path, const std::string& row) {
-  file << row << '\n' << std::flush;
-  if (!file) ThrowFileError(path.string(), "write failed (disk full or file removed?)");
+  WriteWholeLine(file, path.string(), row);
 }
 
 std::string Fixed(double value, int digits) {

@@ -1,6 +1,7 @@
 // `roadscale synth`: renders a synthetic driving sequence with exact ground truth in KITTI's
 // layout (docs/synthetic_scenes.md).
 #include <string>
+#include <vector>
 
 #include "roadscale/synth/scene_options.h"
 #include "roadscale/synth/scene_writer.h"
@@ -23,6 +24,7 @@ struct SynthArguments {
   std::string scene;
   bool colour = false;
   int threads = 0;
+  std::vector<double> distortion;
 };
 
 void RunSynth(const SynthArguments& arguments) {
@@ -37,6 +39,7 @@ void RunSynth(const SynthArguments& arguments) {
   writer.out_dir = arguments.out;
   writer.sequence = arguments.sequence;
   writer.colour = arguments.colour;
+  writer.distortion = arguments.distortion;
   writer.progress = true;
   synth::WriteSyntheticSequence(scene, writer);
 }
@@ -72,6 +75,12 @@ void RegisterSynthCommand(CLI::App& app) {
   command->add_option("--threads", arguments->threads,
                       "Rendering threads; the output does not depend on it (default: the "
                       "scene's Image.threads, 2)");
+  command
+      ->add_option("--distortion", arguments->distortion,
+                   "Render through a lens with this distortion, OpenCV's k1,k2,p1,p2,k3 (or 8 "
+                   "with k4,k5,k6), written to camera.yaml; calib.txt keeps the pinhole camera "
+                   "of the undistorted image (default: none)")
+      ->delimiter(',');
   command->callback([arguments, seed] {
     arguments->seed_given = seed->count() > 0;
     RunSynth(*arguments);

@@ -221,7 +221,20 @@ void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rig
       z.Add(pose.translation().z());
     }
   }
-  Axes axes{80.0, 40.0, width - 30.0, height - 60.0, x.Padded(0.05, 1.0), z.Padded(0.05, 1.0)};
+  std::vector<LegendEntry> legend;
+  if (!gt.empty()) legend.push_back({"Ground truth", kGroundTruth});
+  legend.push_back({"Estimate", kEstimate});
+  if (!keyframes.empty()) legend.push_back({"Keyframes (circles)", kEstimate});
+  legend.push_back({"Start", kBlack, true});
+  // The legend sits right of the plot: with equal axes a trajectory reaches into any corner
+  // of the plot (KITTI 00 ends in the top right), so a legend inside would hide data.
+  const double legend_width = LegendWidth(cr, legend) + 20.0;
+  Axes axes{80.0,
+            40.0,
+            width - 20.0 - legend_width,
+            height - 60.0,
+            x.Padded(0.05, 1.0),
+            z.Padded(0.05, 1.0)};
   // Equal axes: one metre is as long in x as in z; the tighter direction sets the scale and
   // the other range grows around its centre.
   const double metres_per_unit =
@@ -254,12 +267,7 @@ void DrawTopView(cairo_t* cr, double width, double height, const std::vector<Rig
     cairo_rectangle(cr, axes.X(start.x()) - 5.0, axes.Y(start.z()) - 5.0, 10.0, 10.0);
     cairo_fill(cr);
   }
-  std::vector<LegendEntry> legend;
-  if (!gt.empty()) legend.push_back({"Ground truth", kGroundTruth});
-  legend.push_back({"Estimate", kEstimate});
-  if (!keyframes.empty()) legend.push_back({"Keyframes (circles)", kEstimate});
-  legend.push_back({"Start", kBlack, true});
-  DrawLegend(cr, axes.right - 10.0, axes.top + 10.0, legend);
+  DrawLegend(cr, width - 10.0, axes.top, legend);
 }
 
 void DrawErrorPlot(cairo_t* cr, double width, double height, const KittiOdometryResult& kitti,

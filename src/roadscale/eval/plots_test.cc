@@ -47,7 +47,7 @@ TEST(Plots, WritesPngAndSvgOfEachFigure) {
   }
 }
 
-// Bounding box of the pixels of one colour, outside the legend (top right).
+// Bounding box of the pixels of one colour, outside the legend (right of the plot).
 struct PixelBox {
   int min_x = 1 << 30, max_x = -1, min_y = 1 << 30, max_y = -1;
   int Width() const { return max_x - min_x + 1; }
@@ -106,6 +106,46 @@ TEST(Plots, TopViewDrawsXAgainstZWithEqualAxes) {
   EXPECT_NEAR(red.min_x, blue.min_x, 8);
   EXPECT_LT(red.min_y, blue.min_y - 400);
   EXPECT_GT(blue.max_x, red.max_x + 400);
+}
+
+TEST(Plots, TopViewLegendHidesNoData) {
+  // The ground truth (red) runs 99 m along +x at the bottom; the estimate (blue) diagonally
+  // to (99, 99), into the top right corner of the plot, where a legend inside the plot sat.
+  // Both end at x = 99 m: the ends of their lines must be at the same image column.
+  std::vector<Rigid3d> gt;
+  std::vector<Rigid3d> est;
+  for (int i = 0; i < 100; ++i) {
+    gt.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(i, 0, 0)));
+    est.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(i, 0, i)));
+  }
+  testing::TempDir dir;
+  WriteEvaluationPlots(dir.path().string(), gt, est, EvaluateKittiOdometry(gt, est));
+  cairo_surface_t* image =
+      cairo_image_surface_create_from_png(dir.File("trajectory_top_view.png").c_str());
+  ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  const int stride = cairo_image_surface_get_stride(image);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  int red_right = -1;
+  int blue_right = -1;
+  int blue_top = 1 << 30;
+  for (int y = 0; y < cairo_image_surface_get_height(image); ++y) {
+    for (int x = 0; x < cairo_image_surface_get_width(image); ++x) {
+      uint32_t pixel;
+      std::memcpy(&pixel, data + y * stride + 4 * x, sizeof(pixel));
+      const int r = (pixel >> 16) & 0xff;
+      const int g = (pixel >> 8) & 0xff;
+      const int b = pixel & 0xff;
+      if (r > 180 && g < 80 && b < 80) red_right = std::max(red_right, x);
+      if (b > 180 && r < 80 && g < 120) {
+        blue_right = std::max(blue_right, x);
+        blue_top = std::min(blue_top, y);
+      }
+    }
+  }
+  cairo_surface_destroy(image);
+  ASSERT_GT(red_right, 400);
+  EXPECT_NEAR(blue_right, red_right, 3);
+  EXPECT_LT(blue_top, 90);  // the diagonal's end, 5 % of the plot below its top at 40 px
 }
 
 TEST(Plots, ErrorPlotsAreWrittenWhenNoLengthFits) {

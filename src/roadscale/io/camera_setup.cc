@@ -1,5 +1,6 @@
 #include "roadscale/io/camera_setup.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -56,6 +57,22 @@ int ReadInt(const YAML::Node& block, const char* key, const std::string& path) {
   return value;
 }
 
+// OpenCV's order; only the rational model's k4..k6 make the vector 8 long.
+constexpr const char* kDistortionKeys[] = {"k1", "k2", "p1", "p2", "k3", "k4", "k5", "k6"};
+
+// The optional distortion keys: none given is an undistorted camera, missing ones are 0.
+std::vector<double> ReadDistortion(const YAML::Node& block, const std::string& path) {
+  std::vector<double> coefficients(8, 0.0);
+  size_t used = 0;
+  for (size_t i = 0; i < coefficients.size(); ++i) {
+    if (!block[kDistortionKeys[i]]) continue;
+    coefficients[i] = ReadDouble(block, kDistortionKeys[i], path);
+    used = i < 5 ? std::max<size_t>(used, 5) : 8;
+  }
+  coefficients.resize(used);
+  return coefficients;
+}
+
 // The shortest text that reads back as the same double.
 std::string ShortestRoundTrip(double value) {
   char buffer[64];
@@ -71,6 +88,11 @@ void CameraSetup::Check() const {
                   camera.cy <= camera.height,
               "camera.cx/cy", "the principal point must lie inside the image");
   CheckCameraHeight(h0, "camera.h0");
+  CheckOption(distortion.empty() || distortion.size() == 5 || distortion.size() == 8,
+              "camera.distortion", "needs 0, 5 (k1 k2 p1 p2 k3) or 8 (with k4 k5 k6) coefficients");
+  for (double coefficient : distortion) {
+    CheckOption(std::isfinite(coefficient), "camera.distortion", "coefficients must be finite");
+  }
 }
 
 CameraSetup ReadCameraYaml(const std::string& path) {
@@ -91,6 +113,7 @@ CameraSetup ReadCameraYaml(const std::string& path) {
   setup.camera.width = ReadInt(block, "width", path);
   setup.camera.height = ReadInt(block, "height", path);
   setup.h0 = ReadDouble(block, "h0", path);
+  setup.distortion = ReadDistortion(block, path);
   try {
     setup.Check();
   } catch (const Error& e) {
@@ -108,7 +131,8 @@ void WriteCameraYaml(const std::string& path, const CameraSetup& setup) {
   std::ofstream file(path);
   if (!file) ThrowFileError(path, "cannot open for writing");
   const PinholeCamera& c = setup.camera;
-  file << "# Pinhole camera (undistorted image), pixels; h0: camera height above the road, m.\n"
+  file << "# Pinhole camera (of the undistorted image), pixels; h0: camera height above the "
+          "road, m;\n# k1.. p2..: lens distortion (OpenCV's model), when there is any.\n"
        << "Camera:\n"
        << "  fx: " << ShortestRoundTrip(c.fx) << '\n'
        << "  fy: " << ShortestRoundTrip(c.fy) << '\n'
@@ -117,6 +141,9 @@ void WriteCameraYaml(const std::string& path, const CameraSetup& setup) {
        << "  width: " << c.width << '\n'
        << "  height: " << c.height << '\n'
        << "  h0: " << ShortestRoundTrip(setup.h0) << '\n';
+  for (size_t i = 0; i < setup.distortion.size(); ++i) {
+    file << "  " << kDistortionKeys[i] << ": " << ShortestRoundTrip(setup.distortion[i]) << '\n';
+  }
   file.flush();
   if (!file) ThrowFileError(path, "write failed");
 }

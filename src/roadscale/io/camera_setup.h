@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "roadscale/geometry/pinhole_camera.h"
 
@@ -12,9 +13,16 @@ struct CameraSetup {
   PinholeCamera camera;
   // Camera height above the road in metres. 1.65 is KITTI's documented mounting height.
   double h0 = 1.65;
+  // The lens's distortion in OpenCV's model: k1 k2 p1 p2 k3, or k1 k2 p1 p2 k3 k4 k5 k6
+  // (rational); empty for an undistorted (rectified) camera. `camera` is the pinhole camera
+  // of the undistorted image: frame sources undistort every image once, on load, to the same
+  // K and size (io/image_undistorter.h), so that everything after them, segmentation
+  // included, sees a pinhole image.
+  std::vector<double> distortion;
 
   // Throws Error unless the intrinsics are valid (see PinholeCamera::Check), the principal
-  // point lies inside the image and h0 is a positive number.
+  // point lies inside the image, h0 is in (0, 100] m and the distortion has 0, 5 or 8 finite
+  // coefficients.
   void Check() const;
 };
 
@@ -28,9 +36,14 @@ struct CameraSetup {
 //     width: 1241
 //     height: 376
 //     h0: 1.65
+//     k1: -0.28            # optional: lens distortion (OpenCV's model), 0 when not given;
+//     k2: 0.07             #   k4, k5, k6 select the rational model
+//     p1: 0.0002
+//     p2: -0.0001
+//     k3: 0.0
 //
-// Every key is required (h0 too: a silently assumed height would silently scale every
-// result). Other top-level blocks (`Frontend:`, `Scale:`, ...) and other keys inside
+// Every key but the distortion is required (h0 too: a silently assumed height would silently
+// scale every result). Other top-level blocks (`Frontend:`, `Scale:`, ...) and other keys inside
 // `Camera:` are ignored, so a project config file can be passed as it is. Throws Error
 // naming the file, the line and the missing or invalid key. The result has passed Check().
 CameraSetup ReadCameraYaml(const std::string& path);

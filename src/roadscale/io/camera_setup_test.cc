@@ -166,6 +166,26 @@ TEST(CameraSetup, DuplicateKeyDirectoryAndAbsurdHeightAreErrors) {
               HasSubstr("must be in (0, 100] metres, got 1650"));
 }
 
+TEST(CameraSetup, LensDistortionIsReadAndWrittenBack) {
+  TempDir dir;
+  const std::string base =
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n";
+  EXPECT_TRUE(ReadCameraYaml(WriteTextFile(dir.File("pinhole.yaml"), base)).distortion.empty());
+  const CameraSetup five =
+      ReadCameraYaml(WriteTextFile(dir.File("five.yaml"), base + "  k1: -0.28\n  p2: 0.001\n"));
+  EXPECT_EQ(five.distortion, (std::vector<double>{-0.28, 0.0, 0.0, 0.001, 0.0}));
+  const CameraSetup eight =
+      ReadCameraYaml(WriteTextFile(dir.File("eight.yaml"), base + "  k1: 0.1\n  k6: 0.02\n"));
+  EXPECT_EQ(eight.distortion, (std::vector<double>{0.1, 0, 0, 0, 0, 0, 0, 0.02}));
+  WriteCameraYaml(dir.File("back.yaml"), eight);
+  EXPECT_EQ(ReadCameraYaml(dir.File("back.yaml")).distortion, eight.distortion);
+  EXPECT_THAT(ErrorOf([&] {
+                ReadCameraYaml(WriteTextFile(dir.File("bad.yaml"), base + "  k2: strong\n"));
+              }),
+              HasSubstr("bad.yaml:9: Camera.k2: expected a number, found 'strong'"));
+}
+
 TEST(CameraSetup, WriterRefusesAnInvalidCameraAndAnUnwritablePath) {
   TempDir dir;
   CameraSetup bad = ExampleSetup();

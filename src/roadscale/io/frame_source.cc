@@ -10,8 +10,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roadscale/geometry/camera_height.h"
+#include "roadscale/io/image_file.h"
+#include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
-#include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -88,18 +89,7 @@ bool NaturalLess(const std::string& a, const std::string& b) {
 // Decodes one image; the only place frames are read, so every source reports the same
 // errors. `expected_width` 0 skips the size check (used to learn the first image's size).
 cv::Mat LoadImage(const std::string& path, bool color, int expected_width, int expected_height) {
-  // Read here rather than by cv::imread: the reason a file cannot be read (missing, a
-  // directory, permission denied) is named, and a truncated PNG is found before libpng and
-  // OpenCV print their own lines about it.
-  const std::string bytes = ReadInputFile(path, "image");
-  if (bytes.empty()) ThrowFileError(path, "cannot decode image (the file is empty)");
-  const std::string problem = PngStructureProblem(bytes);
-  if (!problem.empty()) ThrowFileError(path, "cannot decode image (" + problem + ")");
-  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-  cv::Mat image = cv::imdecode(buffer, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE);
-  if (image.empty()) {
-    ThrowFileError(path, "cannot decode image (corrupt, truncated or not an image)");
-  }
+  cv::Mat image = ReadImageFile(path, color ? cv::IMREAD_COLOR : cv::IMREAD_GRAYSCALE, "image");
   if (expected_width > 0 && (image.cols != expected_width || image.rows != expected_height)) {
     ThrowFileError(path, "image is " + SizeText(image.cols, image.rows) + " but the sequence's " +
                              "first frame and camera are " +
@@ -177,9 +167,11 @@ bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
          a.width == b.width && a.height == b.height;
 }
 
-// calib.txt has no camera height; see the KittiSequence comment for the order of the sources.
+// calib.txt has no camera height (see the KittiSequence comment for the order of the
+// sources) and no lens distortion (KITTI's are rectified images; a camera YAML can add one).
 double KittiCameraHeight(const FrameSourceOptions& options, const fs::path& sequence_dir,
-                         const PinholeCamera& calib_camera, std::vector<std::string>* notes) {
+                         const PinholeCamera& calib_camera, std::vector<double>* distortion,
+                         std::vector<std::string>* notes) {
   std::string yaml_path = options.camera_yaml;
   if (yaml_path.empty() && fs::exists(sequence_dir / "camera.yaml")) {
     yaml_path = (sequence_dir / "camera.yaml").string();
@@ -189,8 +181,9 @@ double KittiCameraHeight(const FrameSourceOptions& options, const fs::path& sequ
     yaml = ReadCameraYaml(yaml_path);
     if (!SameIntrinsics(yaml->camera, calib_camera)) {
       notes->push_back(yaml_path + " has other intrinsics than calib.txt: using calib.txt's, and " +
-                       "only the camera height from " + yaml_path);
+                       "only the camera height and lens distortion from " + yaml_path);
     }
+    *distortion = yaml->distortion;
   }
   if (options.h0) return *options.h0;
   if (yaml) return yaml->h0;
@@ -282,7 +275,14 @@ Frame ImageFileSequence::Read(size_t position) const {
   frame.timestamp = timestamps_[position];
   frame.path = paths_[position];
   frame.image = LoadImage(frame.path, color_, camera_.camera.width, camera_.camera.height);
+  if (undistorter_) frame.image = undistorter_->Undistort(frame.image);
   return frame;
+}
+
+void ImageFileSequence::UndistortWithCamerasLens() {
+  if (!camera_.distortion.empty()) {
+    undistorter_ = std::make_shared<const ImageUndistorter>(camera_.camera, camera_.distortion);
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -338,8 +338,9 @@ KittiSequence::KittiSequence(const FrameSourceOptions& options) {
   const cv::Mat first = LoadImage(FramePath(0), false, 0, 0);
   const std::string calib_path = (dir / "calib.txt").string();
   camera_.camera = ReadKittiCamera(calib_path, kitti_camera_, first.cols, first.rows);
-  camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &notes_);
+  camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &camera_.distortion, &notes_);
   camera_.Check();
+  UndistortWithCamerasLens();
   color_ = options.color;
 
   const std::vector<double> times =
@@ -444,6 +445,7 @@ ImageFolder::ImageFolder(const FrameSourceOptions& options) {
                                    options.camera_yaml + " says " +
                                    SizeText(camera_.camera.width, camera_.camera.height));
   }
+  UndistortWithCamerasLens();
 
   const std::vector<double> times =
       TimestampsFor((fs::path(folder_) / "times.txt").string(), total_images_, &notes_);
@@ -466,6 +468,7 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
   options.Check();
   CheckInputFile(path_, "video file");
   camera_ = ReadCameraForInput(options, "a video");
+  if (!camera_.distortion.empty()) undistorter_.emplace(camera_.camera, camera_.distortion);
   color_ = options.color;
   if (!capture_.open(path_) || !capture_.isOpened()) {
     ThrowFileError(path_, "cannot open video (unsupported container or codec, or not a video)");
@@ -552,6 +555,7 @@ bool VideoFile::Next(Frame* frame) {
                    "unexpected " + std::to_string(decoded.channels()) + "-channel video frame");
   }
   if (frame->image.depth() != CV_8U) ThrowFileError(frame_path, "video frame is not 8-bit");
+  if (undistorter_) frame->image = undistorter_->Undistort(frame->image);
   frame->index = index;
   frame->timestamp = timestamp;
   frame->path = frame_path;

@@ -11,6 +11,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "roadscale/io/camera_setup.h"
+#include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/trajectory_io.h"
 
 namespace roadscale {
@@ -148,6 +149,10 @@ class ImageFileSequence : public FrameSource {
  protected:
   ImageFileSequence() = default;
 
+  // After camera_ is set: undistort every image Read() returns when the camera has a lens
+  // distortion.
+  void UndistortWithCamerasLens();
+
   CameraSetup camera_;
   std::vector<std::string> paths_;  // selected frames only
   std::vector<double> timestamps_;  // one per selected frame
@@ -157,13 +162,15 @@ class ImageFileSequence : public FrameSource {
 
  private:
   size_t next_position_ = 0;
+  std::shared_ptr<const ImageUndistorter> undistorter_;  // null for a pinhole camera
 };
 
 // A KITTI odometry sequence folder `.../sequences/NN`:
 //   image_0/ or image_2/  %06d.png, numbered 000000 upwards without gaps
 //   calib.txt             P0 (image_0) or P2 (image_2) gives the intrinsics; the image size
 //                         comes from the first image
-//   camera.yaml           optional (roadscale's synthetic scenes write it): its h0 is used
+//   camera.yaml           optional (roadscale's synthetic scenes write it): its h0 and lens
+//                         distortion are used
 // h0 is the first of: options.h0, the h0 of options.camera_yaml, the sequence's camera.yaml,
 // KITTI's documented 1.65 m (with a note, as the scale depends on it).
 //   times.txt             optional; without it timestamps are index / kDefaultFrameRateHz
@@ -245,6 +252,7 @@ class VideoFile : public FrameSource {
   double fps_ = kDefaultFrameRateHz;
   bool color_ = false;
   std::vector<std::string> notes_;
+  std::optional<ImageUndistorter> undistorter_;  // empty for a pinhole camera
 };
 
 // The factory the CLI uses: checks the options, resolves kAuto, and opens the source.

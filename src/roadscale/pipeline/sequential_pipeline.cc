@@ -14,6 +14,7 @@
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/line_file.h"
 
 namespace roadscale {
 namespace {
@@ -31,9 +32,7 @@ std::ofstream OpenOutput(const std::string& path) {
 }
 
 void WriteLine(std::ofstream& file, const std::string& path, const std::string& line) {
-  file << line << '\n';
-  file.flush();
-  if (!file) ThrowFileError(path, "write failed (disk full or file removed?)");
+  WriteWholeLine(file, path, line);
 }
 
 // A pose the trajectory readers would reject (eval, rescale, the run's own report) is never

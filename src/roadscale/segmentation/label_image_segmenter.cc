@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/io/image_file.h"
 #include "roadscale/segmentation/cityscapes.h"
 #include "roadscale/util/error.h"
 
@@ -84,9 +85,9 @@ cv::Mat LabelImageSegmenter::Labels(const std::string& frame_name,
     ThrowFileError(path, "label image of frame " + frame_name +
                              " not found (label folder named in " + model_.yaml_path + ")");
   }
-  const cv::Mat raw = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (raw.empty() || raw.type() != CV_8UC1) {
-    ThrowFileError(path, "cannot read an 8-bit single-channel label image from this file");
+  const cv::Mat raw = ReadImageFile(path, cv::IMREAD_UNCHANGED, "label image");
+  if (raw.type() != CV_8UC1) {
+    ThrowFileError(path, "a label image must be 8-bit with one channel");
   }
   cv::Mat labels = raw;
   if (model_.label_images.ids == LabelIdSpace::kCityscapesLabelIds) {

@@ -4,11 +4,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <unistd.h>
 
 #include "roadscale/io/camera_setup.h"
+#include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/synth/road_plane_file.h"
@@ -81,7 +84,13 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   CameraSetup setup;
   setup.camera = scene_options.image.camera;
   setup.h0 = scene_options.vehicle.h0;
+  setup.distortion = options.distortion;
   WriteCameraYaml((sequence / "camera.yaml").string(), setup);
+  std::optional<ImageDistorter> lens;
+  if (!options.distortion.empty()) lens.emplace(setup.camera, options.distortion);
+  const auto through_lens = [&lens](const cv::Mat& image) {
+    return lens ? lens->Distort(image, cv::INTER_LINEAR) : image;
+  };
 
   TextFile times(sequence / "times.txt");
   TextFile planes(sequence / "road_planes.txt");
@@ -91,8 +100,8 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   for (int i = 0; i < scene.frames(); ++i) {
     const SynthFrame frame = scene.Render(i, options.colour);
     const std::string name = FrameName(i);
-    WritePng(sequence / "image_0" / name, frame.images.grey);
-    if (options.colour) WritePng(sequence / "image_2" / name, frame.images.colour);
+    WritePng(sequence / "image_0" / name, through_lens(frame.images.grey));
+    if (options.colour) WritePng(sequence / "image_2" / name, through_lens(frame.images.colour));
     WritePng(sequence / "semantic" / name, frame.images.labels);
     WritePng(sequence / "depth" / name, frame.images.depth);
     WritePng(sequence / "moving" / name, frame.images.moving);

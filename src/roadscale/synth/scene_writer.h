@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "roadscale/synth/synthetic_scene.h"
 
@@ -11,6 +12,14 @@ struct SceneWriterOptions {
   std::string sequence = "00";  // sequence folder name
   bool colour = false;          // also write image_2 (BGR)
   bool progress = false;        // print progress to stderr
+  // A lens's distortion (OpenCV's model, 5 or 8 coefficients; empty: none). The frames
+  // (image_0, image_2) are written as that lens shows them and camera.yaml carries the
+  // coefficients; calib.txt keeps the pinhole camera that the frame sources undistort the
+  // frames to, and the ground truth images (semantic, depth, moving) stay in that pinhole
+  // geometry: they describe the frames as the pipeline sees them (--labels works as it is).
+  // The renderer draws the pinhole field of view only, so a barrel lens's wider view shows
+  // black beyond it; undistorting never reaches there.
+  std::vector<double> distortion;
 };
 
 // Renders every frame of `scene` and writes, below out_dir:

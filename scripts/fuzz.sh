@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of roadscale's parsers (clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer, in build-fuzz/) and runs each for SECONDS seconds from its seed
+# corpus in fuzz/corpus/<name>/. Installs clang and its fuzzer runtime (Debian packages) when
+# they are missing. Fails on the first target that crashes, leaks, hangs (10 s on one input)
+# or lets anything but roadscale::Error escape; the input that did it is kept in
+# build-fuzz/crashes/. Prints the executions of every target.
+#
+#   scripts/fuzz.sh 20              # 20 s per target (CI)
+#   JOBS=1 scripts/fuzz.sh 600      # longer runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:?usage: scripts/fuzz.sh SECONDS}"
+
+PACKAGES=(clang libclang-rt-14-dev)
+missing=()
+for package in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if ((${#missing[@]} > 0)); then
+  echo "fuzz: installing ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}"
+fi
+
+build=build-fuzz
+targets=(kitti_calib kitti_times trajectory camera_yaml run_config model_yaml scene_yaml
+  png_structure)
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+  -DCMAKE_CXX_COMPILER=clang++ -DROADSCALE_FUZZ=ON -DROADSCALE_SANITIZE=ON \
+  -DROADSCALE_BUILD_TESTS=OFF -DROADSCALE_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target "${targets[@]/%/_fuzzer}"
+
+mkdir -p "$build/crashes"
+# The targets that read files write each input to $TMPDIR: in memory when there is /dev/shm.
+scratch_parent=/dev/shm
+[[ -d "$scratch_parent" && -w "$scratch_parent" ]] || scratch_parent="${TMPDIR:-/tmp}"
+scratch="$(mktemp -d -p "$scratch_parent" roadscale_fuzz.XXXXXX)"
+trap 'rm -rf "$scratch"' EXIT
+summary=()
+for name in "${targets[@]}"; do
+  # New inputs go to a scratch corpus, never into the repository's seeds.
+  work="$build/corpus/$name"
+  mkdir -p "$work"
+  log="$build/$name.log"
+  status=0
+  TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    "$build/fuzz/${name}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -max_len=65536 -print_final_stats=1 -artifact_prefix="$build/crashes/$name-" \
+    "$work" "fuzz/corpus/$name" >"$log" 2>&1 || status=$?
+  runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")"
+  if [[ $status -ne 0 ]]; then
+    tail -n 40 "$log"
+    echo "fuzz: $name FAILED after ${runs:-?} executions (input kept in $build/crashes/)"
+    exit 1
+  fi
+  summary+=("$(printf '%-14s %10s executions in %s s, 0 crashes' "$name" "$runs" "$seconds")")
+done
+printf 'fuzz: %s\n' "${summary[@]}"
