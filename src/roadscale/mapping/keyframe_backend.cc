@@ -65,15 +65,13 @@ std::string MappingModeName(MappingOptions::Mode mode) {
 KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_height,
                                  const MappingOptions& options,
                                  const ScaleEstimatorOptions& selection,
-                                 const TwoViewMotionOptions& pair_motion,
                                  int max_frames_before_scale)
     : camera_(camera),
       camera_height_(camera_height),
       options_(options),
       max_frames_before_scale_(max_frames_before_scale),
       selection_(camera,
-                 SelectionOptions(selection, camera_height, options.road_min_points_per_pair)),
-      pair_motion_(pair_motion) {
+                 SelectionOptions(selection, camera_height, options.road_min_points_per_pair)) {
   camera_.Check();
   options_.Check();
 }
@@ -107,7 +105,8 @@ bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_
       correspondences.push_back({observation.track_id, seen->second, observation.pixel});
     }
   }
-  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, pair_motion_);
+  TwoViewMotionOptions motion_options;
+  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, motion_options);
   if (motion.status != MotionStatus::kOk) return false;
   const double predicted = (Centre(*cam_from_world) - Centre(first.cam_from_world)).norm();
   *cam_from_world = motion.CurFromPrev(predicted > 0.0 ? predicted : 1.0) * first.cam_from_world;
@@ -205,20 +204,9 @@ int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
     cur_pixels.push_back(pixel);
     ids.push_back(id);
   }
-  const Rigid3d map_cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
-  const double baseline = map_cur_from_prev.translation().norm();
+  const Rigid3d cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
+  const double baseline = cur_from_prev.translation().norm();
   if (!(baseline > 0.0)) return 0;
-  // The pair's own two-view motion, fitted on these very pixels, triangulates them best: the
-  // map's relative pose carries the errors of localisation and of the window's scale, and a
-  // fraction of a degree already bends the road points out of Alg. 2's 5 degrees.
-  std::vector<Correspondence> correspondences;
-  correspondences.reserve(ids.size());
-  for (size_t i = 0; i < ids.size(); ++i) {
-    correspondences.push_back({ids[i], prev_pixels[i], cur_pixels[i]});
-  }
-  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, pair_motion_);
-  const Rigid3d cur_from_prev =
-      motion.status == MotionStatus::kOk ? motion.CurFromPrev(baseline) : map_cur_from_prev;
   const ScaleEstimate estimate =
       selection_.Estimate(prev_pixels, cur_pixels, cur_from_prev, prev.road_mask);
   if (estimate.status != ScaleStatus::kOk) return 0;

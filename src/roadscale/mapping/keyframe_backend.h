@@ -7,7 +7,6 @@
 #include <opencv2/core.hpp>
 
 #include "roadscale/frontend/mono_frontend.h"
-#include "roadscale/frontend/two_view_motion.h"
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/mapping/frame_localizer.h"
 #include "roadscale/mapping/keyframe_selector.h"
@@ -74,13 +73,11 @@ std::string FormatMappedFrameCsv(const MappedFrame& frame);
 class KeyframeBackend {
  public:
   // `camera_height` is h0; `selection` the paper's road selection (its RANSAC minimum is
-  // replaced by options.road_min_points_per_pair); `pair_motion` the two-view motion's options
-  // (the frontend's), for keyframe pairs; `max_frames_before_scale`: frames kept
+  // replaced by options.road_min_points_per_pair); `max_frames_before_scale`: frames kept
   // waiting for the map's first scale before the window slides without one (0: never wait).
   // Throws Error on invalid options or camera.
   KeyframeBackend(const PinholeCamera& camera, double camera_height, const MappingOptions& options,
-                  const ScaleEstimatorOptions& selection, const TwoViewMotionOptions& pair_motion,
-                  int max_frames_before_scale);
+                  const ScaleEstimatorOptions& selection, int max_frames_before_scale);
 
   // Takes the frontend's result for the next frame and its road mask (empty: none). Returns
   // the frames whose poses became final, in order.
@@ -122,7 +119,6 @@ class KeyframeBackend {
   MappingOptions options_;
   int max_frames_before_scale_;
   ScaleEstimator selection_;
-  TwoViewMotionOptions pair_motion_;  // the keyframe pairs' own motion, for the selection
   LocalWindow window_;
   std::deque<PendingFrame> pending_;
   Rigid3d last_cam_from_world_ = Rigid3d::Identity();

@@ -9,8 +9,7 @@ namespace {
 
 std::vector<MappedFrame> RunBackend(const testing::MappingTestScene& scene, double noise_px,
                                     const MappingOptions& options = {}) {
-  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
-                          TwoViewMotionOptions(), 100);
+  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(), 100);
   std::vector<MappedFrame> mapped;
   for (int f = 0; f < static_cast<int>(scene.cam_from_world.size()); ++f) {
     for (MappedFrame& m : backend.AddFrame(scene.Frontend(f, noise_px, 3), cv::Mat())) {
@@ -77,8 +76,7 @@ TEST(KeyframeBackend, TheWindowStaysBounded) {
   const auto scene = testing::MappingTestScene::Street(100, 1.0, 0.1);
   MappingOptions options;
   options.window_size = 6;
-  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
-                          TwoViewMotionOptions(), 100);
+  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(), 100);
   size_t largest = 0;
   for (int f = 0; f < 100; ++f) {
     backend.AddFrame(scene.Frontend(f, 0.2, 3), cv::Mat());
