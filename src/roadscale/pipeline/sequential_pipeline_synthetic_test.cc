@@ -132,7 +132,7 @@ TEST(SequentialPipelineSynthetic, APoseBeyondWhatTheReadersAcceptIsNeverWritten)
   const std::string out = dir.File("run");
   std::string message;
   try {
-    RunSequentialPipeline(*source, absurd, {}, out);
+    RunSequentialPipeline(*source, absurd, FrameToFrame(), out);
   } catch (const Error& e) {
     message = e.what();
   }
