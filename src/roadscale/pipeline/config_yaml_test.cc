@@ -159,6 +159,11 @@ TEST(RunConfigYaml, RangeErrorsNameTheFileAndTheKeysLine) {
             dir.File("config.yaml") +
                 ":2: Camera.h0: invalid option camera.h0: the camera height above the road must "
                 "be in (0, 100] metres, got 1650");
+  const std::string camera = WriteFile(
+      dir, "Camera:\n  fx: 700\n  fy: 0\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n");
+  EXPECT_EQ(ErrorOf(camera).rfind(dir.File("config.yaml") + ":3: Camera.fy: invalid option ", 0),
+            0u)
+      << ErrorOf(camera);
   const std::string workers = WriteFile(dir, "Segmentation:\n  every: 1\n  workers: 99\n");
   EXPECT_EQ(ErrorOf(workers).rfind(dir.File("config.yaml") + ":3: Segmentation.workers: ", 0), 0u)
       << ErrorOf(workers);
