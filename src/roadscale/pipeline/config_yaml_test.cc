@@ -140,6 +140,9 @@ TEST(RunConfigYaml, RepeatedBlocksAndKeysAreErrors) {
                 .find("config.yaml:5: key 'Scale' appears twice in one mapping (first on line 1)"),
             std::string::npos)
       << ErrorOf(block_twice);
+  const std::string empty_key = WriteFile(dir, "Scale:\n  : 3\n");
+  EXPECT_NE(ErrorOf(empty_key).find("config.yaml:2: a key is empty"), std::string::npos)
+      << ErrorOf(empty_key);
   const std::string key_twice = WriteFile(dir, "Frontend:\n  detector: orb\n  detector: sift\n");
   EXPECT_NE(ErrorOf(key_twice).find("config.yaml:3: key 'detector' appears twice"),
             std::string::npos)
