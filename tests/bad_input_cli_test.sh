@@ -131,6 +131,10 @@ if [[ "$mode" == "files" ]]; then
     run_kitti --h0 1e308 --out "$out/h0run"
   [[ ! -e "$out/h0run/poses_kitti.txt" ]] || fail "poses written despite --h0 1e308"
   expect_error 1 "invalid option h0: .* got 0" run_kitti --h0 0 --out "$out/h0run"
+  printf 'Camera:\n  fx: 0\n  fy: 700\n  cx: 300\n  cy: 200\n  width: 640\n  height: 480\n' \
+    >"$out/fx.yaml"
+  expect_error 1 "fx\.yaml:2: Camera\.fx: invalid option camera\.fx" \
+    "$roadscale" run --images "$seq/image_0" --config "$out/fx.yaml" --out "$out/r"
   expect_error 1 "a_dir: cannot open camera YAML file: is a directory" \
     "$roadscale" run --images "$seq/image_0" --camera "$out/a_dir" --no-segmentation --out "$out/r"
   { cat "$seq/camera.yaml"; echo "  fx: 1"; } >"$out/cam_twice.yaml"
@@ -264,6 +268,9 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   expect_ok "$roadscale" rescale --trajectory <(cat "$out/five.txt") --kitti "$seq" \
     --no-segmentation --out "$out/piped"
   check_pose_rows "$out/piped" 5
+  expect_error 1 "invalid option --max-time-diff: must be a non-negative number of seconds" \
+    "$roadscale" rescale --trajectory "$out/five.txt" --kitti "$seq" --max-time-diff -1 \
+    --no-segmentation --out "$out/r"
   awk 'NR == 3 { $1 = $2 = $3 = 0 } { print }' "$out/five.txt" >"$out/degenerate.txt"
   expect_error 1 "degenerate\.txt:3: the 3x3 part is not a rotation" \
     "$roadscale" rescale --trajectory "$out/degenerate.txt" --kitti "$seq" --no-segmentation \

@@ -136,6 +136,8 @@ void RunRescale(const RescaleArguments& arguments) {
     ReadRunConfig(arguments.config, &config);
     options.scale = config.scale;
   }
+  CheckOption(std::isfinite(arguments.max_time_diff) && arguments.max_time_diff >= 0.0,
+              "--max-time-diff", "must be a non-negative number of seconds");
   options.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.refine_motion = !arguments.no_refine;
   TrajectoryFormat format = TrajectoryFormat::kKitti;

@@ -1,11 +1,14 @@
 #include "roadscale/pipeline/config_yaml.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -220,6 +223,22 @@ RunConfig ApplyAllBut(const RunConfig& initial, const std::vector<ReadKey>& keys
 
 void CheckValues(const RunConfig& config) {
   if (config.camera.h0) CheckCameraHeight(*config.camera.h0, "camera.h0");
+  // Each intrinsic on its own (with its image side), so that leaving out the bad one is what
+  // makes the config pass.
+  const RunConfig::Camera& camera = config.camera;
+  for (const auto& [focal, name] : {std::pair{camera.fx, "camera.fx"}, {camera.fy, "camera.fy"}}) {
+    if (focal) CheckOption(std::isfinite(*focal) && *focal > 0.0, name, "must be positive");
+  }
+  for (const auto& [side, name] :
+       {std::pair{camera.width, "camera.width"}, {camera.height, "camera.height"}}) {
+    if (side) CheckOption(*side > 0, name, "must be positive");
+  }
+  for (const auto& [centre, side, name] : {std::tuple{camera.cx, camera.width, "camera.cx"},
+                                           {camera.cy, camera.height, "camera.cy"}}) {
+    if (centre && side) {
+      CheckOption(*centre >= 0.0 && *centre <= *side, name, "must lie inside the image");
+    }
+  }
   config.pipeline.Check();
   config.scale.Check();
   config.segmentation.Check();

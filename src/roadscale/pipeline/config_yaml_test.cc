@@ -140,6 +140,9 @@ TEST(RunConfigYaml, RepeatedBlocksAndKeysAreErrors) {
                 .find("config.yaml:5: key 'Scale' appears twice in one mapping (first on line 1)"),
             std::string::npos)
       << ErrorOf(block_twice);
+  const std::string empty_key = WriteFile(dir, "Scale:\n  : 3\n");
+  EXPECT_NE(ErrorOf(empty_key).find("config.yaml:2: a key is empty"), std::string::npos)
+      << ErrorOf(empty_key);
   const std::string key_twice = WriteFile(dir, "Frontend:\n  detector: orb\n  detector: sift\n");
   EXPECT_NE(ErrorOf(key_twice).find("config.yaml:3: key 'detector' appears twice"),
             std::string::npos)
@@ -159,6 +162,11 @@ TEST(RunConfigYaml, RangeErrorsNameTheFileAndTheKeysLine) {
             dir.File("config.yaml") +
                 ":2: Camera.h0: invalid option camera.h0: the camera height above the road must "
                 "be in (0, 100] metres, got 1650");
+  const std::string camera = WriteFile(
+      dir, "Camera:\n  fx: 700\n  fy: 0\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n");
+  EXPECT_EQ(ErrorOf(camera).rfind(dir.File("config.yaml") + ":3: Camera.fy: invalid option ", 0),
+            0u)
+      << ErrorOf(camera);
   const std::string workers = WriteFile(dir, "Segmentation:\n  every: 1\n  workers: 99\n");
   EXPECT_EQ(ErrorOf(workers).rfind(dir.File("config.yaml") + ":3: Segmentation.workers: ", 0), 0u)
       << ErrorOf(workers);

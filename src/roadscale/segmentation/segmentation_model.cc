@@ -223,7 +223,8 @@ LabelImageSpec ReadLabelImageSpec(const ModelFileReader& reader) {
   LabelImageSpec spec;
   const fs::path folder = reader.String("folder", "the folder of the label PNGs");
   spec.folder = folder.is_absolute() ? folder : fs::path(reader.path()).parent_path() / folder;
-  if (!fs::is_directory(spec.folder)) {
+  std::error_code error;
+  if (!fs::is_directory(spec.folder, error)) {
     reader.Fail(reader.root()["folder"], "label folder " + spec.folder.string() + " not found");
   }
   spec.ids = reader.Choice("ids", {"train_ids", "label_ids"}, "") == "train_ids"
@@ -243,16 +244,21 @@ LabelImageSpec ReadLabelImageSpec(const ModelFileReader& reader) {
 }  // namespace
 
 fs::path ResolveModelFile(const std::string& yaml_path, const std::string& file) {
+  // The error_code forms: a name the file system refuses (too long, a symlink loop) is "not
+  // found" here, not an exception of another type.
+  const auto is_file = [](const fs::path& path) {
+    std::error_code ignored;
+    return fs::is_regular_file(path, ignored);
+  };
   const fs::path relative(file);
   if (relative.is_absolute()) {
-    if (!fs::is_regular_file(relative))
-      ThrowFileError(yaml_path, "model file " + file + " not found");
+    if (!is_file(relative)) ThrowFileError(yaml_path, "model file " + file + " not found");
     return relative;
   }
   const fs::path beside = fs::path(yaml_path).parent_path() / relative;
-  if (fs::is_regular_file(beside)) return beside;
+  if (is_file(beside)) return beside;
   const fs::path shared = SharedDataDir() / relative;
-  if (fs::is_regular_file(shared)) return shared;
+  if (is_file(shared)) return shared;
   ThrowFileError(yaml_path, "model file " + file + " not found, neither at " + beside.string() +
                                 " nor at " + shared.string() +
                                 " (set ROADSCALE_SHARED to the shared data folder)");

@@ -118,6 +118,11 @@ TEST_F(SegmentationModelTest, MissingOrWrongValuesSayWhatWasExpected) {
        "the default 'road_ids' holds 0, a train id the network never outputs (see its "
        "train_ids)"},
       {OnnxYaml("num_classes: 3\n"), "key 'num_classes' appears twice in one mapping"},
+      // A name longer than the file system allows: "not found", not a filesystem_error.
+      {"backend: onnx\nfile: " + std::string(5000, 'x') +
+           "\ninput_size: [64, 32]\n"
+           "channel_order: rgb\nnum_classes: 3\n",
+       "model.yaml: model file xxxx"},
   };
   for (const Case& c : cases) {
     const std::string message = ReadError(Yaml(c.yaml));

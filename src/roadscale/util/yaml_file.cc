@@ -11,10 +11,11 @@
 namespace roadscale {
 namespace {
 
-// Walks every mapping of the document once. Aliases make a node reachable many times (and
-// nested aliases exponentially many), so collections are visited once each, known by where
-// they start and what they are: two different collections cannot share both.
-void CheckNoDuplicateKeys(const YAML::Node& root, const std::string& path) {
+// Walks every mapping of the document once, checking its keys: names, each once. Aliases make a
+// node reachable many times (and nested aliases exponentially many), so collections are visited
+// once each, known by where they start and what they are: two different collections cannot share
+// both.
+void CheckKeys(const YAML::Node& root, const std::string& path) {
   std::set<std::pair<int, int>> visited;
   std::vector<YAML::Node> pending = {root};
   while (!pending.empty()) {
@@ -29,7 +30,16 @@ void CheckNoDuplicateKeys(const YAML::Node& root, const std::string& path) {
     std::map<std::string, int> first_line;
     for (const auto& entry : node) {
       pending.push_back(entry.second);
-      if (!entry.first.IsScalar()) continue;
+      if (!entry.first.IsScalar()) {
+        // An empty key (": 3") or a list or mapping as a key: no reader has a use for one,
+        // and each would have to guard its key conversions against it.
+        int line = YamlLine(entry.first.Mark());
+        if (line == 0) line = YamlLine(entry.second.Mark());
+        if (line == 0) line = YamlLine(node.Mark());
+        ThrowFileError(path, line,
+                       entry.first.IsNull() ? "a key is empty (expected 'name: value')"
+                                            : "a key must be a name, not a list or a mapping");
+      }
       const int line = YamlLine(entry.first.Mark());
       const auto [it, inserted] = first_line.emplace(entry.first.Scalar(), line);
       if (!inserted) {
@@ -53,7 +63,7 @@ YAML::Node ParseYaml(const std::string& text, const std::string& path) {
   } catch (const YAML::Exception& e) {
     ThrowFileError(path, YamlLine(e.mark), "invalid YAML: " + e.msg);
   }
-  CheckNoDuplicateKeys(root, path);
+  CheckKeys(root, path);
   return root;
 }
 

@@ -10,6 +10,7 @@ namespace roadscale {
 // and the line on a syntax error, and on a key that appears twice in one mapping: yaml-cpp
 // keeps both, its lookups take the first and a loop over the mapping reads both, so `fx`
 // twice or a `Scale:` block twice would otherwise pass silently with one of them ignored.
+// Every key must be a name: an empty key or a list or mapping as a key is an error too.
 YAML::Node ParseYaml(const std::string& text, const std::string& path);
 
 // ParseYaml of the file (ReadInputFile: "PATH: cannot open WHAT: reason" when it cannot be read).

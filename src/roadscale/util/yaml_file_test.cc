@@ -39,6 +39,13 @@ TEST(YamlFile, DuplicatesInsideSequencesAndFlowMappings) {
   EXPECT_EQ(ErrorOf("a: {x: 1}\nb: {x: 2}\n"), "no error");
 }
 
+TEST(YamlFile, KeysMustBeNames) {
+  // Found by the fuzzer: the config reader converted every key to a string, and an empty key
+  // escaped as YAML::TypedBadConversion (an "internal error").
+  EXPECT_EQ(ErrorOf("Scale:\n  : 3\n"), "c.yaml:2: a key is empty (expected 'name: value')");
+  EXPECT_EQ(ErrorOf("? [a, b]\n: 1\n"), "c.yaml:1: a key must be a name, not a list or a mapping");
+}
+
 TEST(YamlFile, SyntaxErrorNamesTheLine) {
   EXPECT_EQ(ErrorOf("a: 1\nb: [1, 2\n").rfind("c.yaml:", 0), 0u);
   EXPECT_NE(ErrorOf("a: 1\nb: [1, 2\n").find("invalid YAML"), std::string::npos);
