@@ -8,6 +8,8 @@
 #
 #   scripts/fuzz.sh 20              # 20 s per target (CI)
 #   JOBS=1 scripts/fuzz.sh 600      # longer runs
+#   FUZZ_SEED=0 scripts/fuzz.sh 60  # libFuzzer's own random seed (default 1: CI explores the
+#                                   # same inputs every time, as far as its time allows)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:?usage: scripts/fuzz.sh SECONDS}"
@@ -52,7 +54,7 @@ for name in "${targets[@]}"; do
   log="$build/$name.log"
   status=0
   TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "$build/fuzz/${name}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    "$build/fuzz/${name}_fuzzer" -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$build/crashes/$name-" \
     "$work" "fuzz/corpus/$name" >"$log" 2>&1 || status=$?
   runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")"
