@@ -66,7 +66,7 @@ TEST(LocalBundleAdjuster, RecoversPosesAndLandmarksFromNoiseAndOutliers) {
   ASSERT_GT(MaxCentreError(window, scene), 0.1);
 
   LocalBundleAdjusterOptions options;
-  options.max_iterations = 50;
+  options.max_iterations = 30;
   const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
   EXPECT_TRUE(report.ran);
   EXPECT_FALSE(report.scale_from_road);
@@ -131,7 +131,7 @@ TEST_P(LocalBundleAdjusterScale, TheCameraHeightTermMakesAWrongScaleMetric) {
   ASSERT_GE(window.CountRoadLandmarks(), 100);
 
   LocalBundleAdjusterOptions options;
-  options.max_iterations = 100;
+  options.max_iterations = 30;
   const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
   EXPECT_TRUE(report.scale_from_road);
   const double true_length =
