@@ -15,6 +15,18 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
   return cam_from_world.inverse().translation();
 }
 
+Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
+                      const Rigid3d& cam_from_world) {
+  Keyframe keyframe;
+  keyframe.frame_index = frontend.frame_index;
+  keyframe.cam_from_world = cam_from_world;
+  for (const TrackObservation& o : frontend.observations) {
+    keyframe.observations[o.track_id] = o.pixel;
+  }
+  keyframe.road_mask = road_mask;
+  return keyframe;
+}
+
 ScaleEstimatorOptions SelectionOptions(ScaleEstimatorOptions options, double camera_height,
                                        int min_points) {
   options.camera_height = camera_height;
@@ -123,12 +135,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
   if (!has_frame_) {
     has_frame_ = true;
-    Keyframe keyframe;
-    keyframe.frame_index = frontend.frame_index;
-    for (const TrackObservation& o : frontend.observations)
-      keyframe.observations[o.track_id] = o.pixel;
-    keyframe.road_mask = road_mask;
-    window_.AddKeyframe(std::move(keyframe));
+    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, Rigid3d::Identity()));
     mapped.keyframe = true;
     mapped.keyframe_reason = "first";
     pending.keyframe_before = frontend.frame_index;
@@ -172,12 +179,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
 void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
                                   const Rigid3d& cam_from_world, MappedFrame* mapped) {
-  Keyframe keyframe;
-  keyframe.frame_index = frontend.frame_index;
-  keyframe.cam_from_world = cam_from_world;
-  for (const TrackObservation& o : frontend.observations)
-    keyframe.observations[o.track_id] = o.pixel;
-  keyframe.road_mask = road_mask;
+  Keyframe keyframe = MakeKeyframe(frontend, road_mask, cam_from_world);
   keyframe.baseline_at_creation =
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));

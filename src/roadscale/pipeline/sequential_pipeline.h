@@ -123,7 +123,9 @@ class SequentialPipeline {
   // The scale and pose stage: appends the frame's pose rows and record, flushed, so that a
   // run stopped at frame k leaves the rows of frames before k intact. Frames before the first
   // valid scale wait (PipelineOptions::max_frames_before_first_scale) and are written with
-  // the first scaled frame or by Finish; their returned record says "unscaled".
+  // the first scaled frame or by Finish; their returned record says "unscaled". In keyframe
+  // mode every frame waits for the back end (rows are written as its window moves on) and the
+  // returned record says "waiting".
   FrameRecord Integrate(TrackedFrame tracked);
 
   // Called with each frame's record once its rows are written, in frame order (a frame that
