@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <optional>
+#include <set>
 #include <sstream>
 
 #include "roadscale/frontend/two_view_motion.h"
+#include "roadscale/scale/road_model_check.h"
+#include "roadscale/scale/road_plane_ransac.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -43,6 +47,7 @@ void MappingOptions::Check() const {
   CheckOption(window_size >= 2, "mapping.window_size", "must be >= 2 keyframes");
   CheckOption(road_min_points_per_pair >= 3, "mapping.road_min_points_per_pair",
               "must be >= 3 (a plane needs three points)");
+  CheckOption(road_pool_pairs >= 1, "mapping.road_pool_pairs", "must be >= 1 (1: no pooling)");
   keyframes.Check();
   landmarks.Check();
   localization.Check();
@@ -211,15 +216,63 @@ int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
   if (!(baseline > 0.0)) return 0;
   const ScaleEstimate estimate =
       selection_.Estimate(prev_pixels, cur_pixels, cur_from_prev, prev.road_mask);
-  if (estimate.status != ScaleStatus::kOk) return 0;
+  std::vector<int64_t> candidates;
+  for (int index : estimate.candidate_track_indices) candidates.push_back(ids[index]);
+  recent_road_candidates_.push_back(std::move(candidates));
+  while (recent_road_candidates_.size() > static_cast<size_t>(options_.road_pool_pairs)) {
+    recent_road_candidates_.pop_front();
+  }
+  if (estimate.status != ScaleStatus::kOk) {
+    // Pooled candidates failed their own pair's fit once: worth their noise only where the
+    // window would otherwise lose its road scale.
+    const bool window_short_of_road =
+        window_.CountRoadLandmarks() < options_.bundle_adjustment.min_road_landmarks;
+    return window_short_of_road ? MarkPooledRoadLandmarks(prev, cur_from_prev, mapped) : 0;
+  }
   mapped->pair_scale = camera_height_ / (estimate.plane.height * baseline);
+  std::vector<int64_t> road_ids;
+  for (int index : estimate.road_track_indices) road_ids.push_back(ids[index]);
+  return MarkRoad(road_ids, prev, estimate.plane.normal);
+}
+
+int KeyframeBackend::MarkPooledRoadLandmarks(const Keyframe& anchor, const Rigid3d& cur_from_prev,
+                                             MappedFrame* mapped) {
+  if (options_.road_pool_pairs < 2) return 0;
+  const std::optional<Eigen::Vector3d> expected_normal =
+      ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
+  if (!expected_normal) return 0;
+  std::set<int64_t> pooled;
+  for (const std::vector<int64_t>& candidates : recent_road_candidates_) {
+    pooled.insert(candidates.begin(), candidates.end());
+  }
+  std::vector<int64_t> ids;
+  std::vector<Eigen::Vector3d> points;
+  for (int64_t id : pooled) {
+    const auto landmark = window_.landmarks().find(id);
+    if (landmark == window_.landmarks().end()) continue;
+    const Eigen::Vector3d point = anchor.cam_from_world * landmark->second.position;
+    if (point.z() <= 0.0) continue;
+    ids.push_back(id);
+    points.push_back(point);
+  }
+  const RoadPlaneFit fit =
+      FitRoadPlaneRansac(points, *expected_normal, selection_.options().ransac);
+  if (fit.status != RoadPlaneFit::Status::kOk) return 0;
+  mapped->pair_scale = camera_height_ / fit.plane.height;
+  std::vector<int64_t> road_ids;
+  for (int index : fit.inliers) road_ids.push_back(ids[index]);
+  return MarkRoad(road_ids, anchor, fit.plane.normal);
+}
+
+int KeyframeBackend::MarkRoad(const std::vector<int64_t>& landmark_ids, const Keyframe& anchor,
+                              const Eigen::Vector3d& normal_in_anchor) {
   int marked = 0;
-  for (int index : estimate.road_track_indices) {
-    const auto landmark = window_.landmarks().find(ids[index]);
+  for (int64_t id : landmark_ids) {
+    const auto landmark = window_.landmarks().find(id);
     if (landmark == window_.landmarks().end() || landmark->second.is_road) continue;
     landmark->second.is_road = true;
-    landmark->second.road_anchor_frame = prev.frame_index;
-    landmark->second.road_normal_in_anchor = estimate.plane.normal;
+    landmark->second.road_anchor_frame = anchor.frame_index;
+    landmark->second.road_normal_in_anchor = normal_in_anchor;
     ++marked;
   }
   return marked;

@@ -30,6 +30,12 @@ struct MappingOptions {
   // window's road landmarks together do (min_road_landmarks). 6 still lets RANSAC tell a
   // plane from a few stray points.
   int road_min_points_per_pair = 6;
+  // Where a keyframe pair's own selection has fewer road points than that (little road
+  // texture, a highway's few near points, traffic in front) and the window has fewer road
+  // landmarks than it needs for its scale (bundle_adjustment.min_road_landmarks), RANSAC runs
+  // once more on the selected candidates of the last road_pool_pairs pairs together, as the
+  // map's landmarks in the anchor keyframe's frame. 1 turns the pooling off.
+  int road_pool_pairs = 3;
   KeyframeSelectorOptions keyframes;
   LandmarkTriangulatorOptions landmarks;
   FrameLocalizerOptions localization;
@@ -106,6 +112,12 @@ class KeyframeBackend {
   // Marks the landmarks the paper's selection finds on the road between the last two
   // keyframes; returns how many.
   int MarkRoadLandmarks(MappedFrame* mapped);
+  // The pooled fallback of MarkRoadLandmarks (MappingOptions::road_pool_pairs).
+  int MarkPooledRoadLandmarks(const Keyframe& anchor, const Rigid3d& cur_from_prev,
+                              MappedFrame* mapped);
+  // Marks `landmark_ids` as road landmarks under `anchor` with the road normal found there.
+  int MarkRoad(const std::vector<int64_t>& landmark_ids, const Keyframe& anchor,
+               const Eigen::Vector3d& normal_in_anchor);
   // Gives an unscaled map the road's scale in one step before its first adjustment with it:
   // the adjustment alone would need many iterations for so large a change.
   void ScaleMapOnFirstRoad();
@@ -121,6 +133,8 @@ class KeyframeBackend {
   ScaleEstimator selection_;
   LocalWindow window_;
   std::deque<PendingFrame> pending_;
+  // Track ids of the road candidates of the last road_pool_pairs keyframe pairs.
+  std::deque<std::vector<int64_t>> recent_road_candidates_;
   Rigid3d last_cam_from_world_ = Rigid3d::Identity();
   Rigid3d last_step_ = Rigid3d::Identity();  // cur_from_prev of the last moving frame
   bool has_frame_ = false;

@@ -1,5 +1,9 @@
 #include "roadscale/mapping/keyframe_backend.h"
 
+#include <map>
+
+#include <opencv2/imgproc.hpp>
+
 #include <gtest/gtest.h>
 
 #include "roadscale/mapping/mapping_test_scene.h"
@@ -7,12 +11,24 @@
 namespace roadscale {
 namespace {
 
+// A perfect segmentation's road mask: a disc around every road point the frame sees.
+cv::Mat RoadMask(const testing::MappingTestScene& scene, int frame) {
+  cv::Mat mask(scene.camera.height, scene.camera.width, CV_8UC1, cv::Scalar(0));
+  for (const TrackObservation& o : scene.Observe(frame, 0.0, 0)) {
+    if (!scene.is_road[o.track_id]) continue;
+    cv::circle(mask, cv::Point(static_cast<int>(o.pixel.x()), static_cast<int>(o.pixel.y())), 4,
+               cv::Scalar(255), cv::FILLED);
+  }
+  return mask;
+}
+
 std::vector<MappedFrame> RunBackend(const testing::MappingTestScene& scene, double noise_px,
-                                    const MappingOptions& options = {}) {
+                                    const MappingOptions& options = {}, bool road_masks = false) {
   KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(), 100);
   std::vector<MappedFrame> mapped;
   for (int f = 0; f < static_cast<int>(scene.cam_from_world.size()); ++f) {
-    for (MappedFrame& m : backend.AddFrame(scene.Frontend(f, noise_px, 3), cv::Mat())) {
+    const cv::Mat mask = road_masks ? RoadMask(scene, f) : cv::Mat();
+    for (MappedFrame& m : backend.AddFrame(scene.Frontend(f, noise_px, 3), mask)) {
       mapped.push_back(std::move(m));
     }
     EXPECT_LE(backend.window().keyframes().size(), 200u);
@@ -70,6 +86,45 @@ TEST(KeyframeBackend, AStoppedCarKeepsItsPose) {
       (mapped[59].world_from_cam.translation() - mapped[0].world_from_cam.translation()).norm() /
           truth,
       1.0, 0.02);
+}
+
+// Keeps one road point in `keep_one_in`: a road with little texture.
+void ThinTheRoad(testing::MappingTestScene* scene, int keep_one_in) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<bool> is_road;
+  int road = 0;
+  for (size_t i = 0; i < scene->points.size(); ++i) {
+    if (scene->is_road[i] && road++ % keep_one_in != 0) continue;
+    points.push_back(scene->points[i]);
+    is_road.push_back(scene->is_road[i]);
+  }
+  scene->points = points;
+  scene->is_road = is_road;
+}
+
+TEST(KeyframeBackend, PoolsTheRoadOfSeveralPairsWhereOnePairSeesTooLittle) {
+  auto scene = testing::MappingTestScene::Street(80, 1.5, 0.2);
+  // One road point in 80: most keyframe pairs select fewer than road_min_points_per_pair.
+  ThinTheRoad(&scene, 80);
+  std::vector<Eigen::Vector3d> truth;
+  for (const Rigid3d& pose : scene.cam_from_world) truth.push_back(pose.inverse().translation());
+  std::map<int, int> keyframes_with_road;
+  for (int pool : {1, 3}) {
+    MappingOptions options;
+    options.road_pool_pairs = pool;
+    const std::vector<MappedFrame> mapped = RunBackend(scene, 0.2, options, true);
+    ASSERT_EQ(mapped.size(), scene.cam_from_world.size());
+    std::vector<Eigen::Vector3d> estimated;
+    for (const MappedFrame& m : mapped) {
+      estimated.push_back(m.world_from_cam.translation());
+      keyframes_with_road[pool] += m.road_points > 0;
+    }
+    if (pool == 3) {
+      EXPECT_NE(mapped.back().scale, MappedFrame::Scale::kNone);
+      EXPECT_NEAR(PathLength(estimated) / PathLength(truth), 1.0, 0.015);
+    }
+  }
+  EXPECT_GE(keyframes_with_road[3], 2 * keyframes_with_road[1]);
 }
 
 TEST(KeyframeBackend, TheWindowStaysBounded) {

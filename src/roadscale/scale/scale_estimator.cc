@@ -131,6 +131,7 @@ ScaleEstimate ScaleEstimator::Estimate(const std::vector<Eigen::Vector2d>& prev_
     selection = Compose(selection, check.kept);
   }
   estimate.num_after_road_model = static_cast<int>(selection.size());
+  estimate.candidate_track_indices = Compose(triangulated.track_indices, selection);
 
   const RoadPlaneFit fit =
       FitRoadPlaneRansac(Gather(triangulated.points, selection), *road_normal, options_.ransac);

@@ -88,6 +88,9 @@ struct ScaleEstimate {
   Plane plane;
   // Tracks (indices into the input pixel lists) whose points are the plane's inliers.
   std::vector<int> road_track_indices;
+  // Tracks that passed the selection (road mask, horizon, Alg. 1, Alg. 2): what RANSAC was
+  // given, also when it had too few of them.
+  std::vector<int> candidate_track_indices;
 };
 
 // The road-plane scale of section III, frame pair after frame pair. It knows nothing of the
