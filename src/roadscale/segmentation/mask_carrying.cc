@@ -1,0 +1,130 @@
+#include "roadscale/segmentation/mask_carrying.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+cv::Matx33d ToCv(const Eigen::Matrix3d& m) {
+  cv::Matx33d out;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out(r, c) = m(r, c);
+  }
+  return out;
+}
+
+bool OnMask(const cv::Mat& mask, const Eigen::Vector2d& p) {
+  const int x = static_cast<int>(std::lround(p.x()));
+  const int y = static_cast<int>(std::lround(p.y()));
+  return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<unsigned char>(y, x) != 0;
+}
+
+}  // namespace
+
+void MaskCarryOptions::Check() const {
+  CheckOption(road_min_tracks >= 4, "segmentation.carry_road_min_tracks",
+              "must be >= 4 (a homography needs 4 points)");
+  CheckOption(std::isfinite(road_ransac_threshold_px) && road_ransac_threshold_px > 0.0,
+              "segmentation.carry_road_ransac_threshold_px", "must be > 0");
+  CheckOption(std::isfinite(dynamic_growth_px_per_frame) && dynamic_growth_px_per_frame >= 0.0,
+              "segmentation.carry_dynamic_growth_px_per_frame", "must be >= 0");
+}
+
+std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector2d>& prev,
+                                                 const std::vector<Eigen::Vector2d>& cur,
+                                                 const cv::Mat& prev_road_mask,
+                                                 const MaskCarryOptions& options) {
+  if (prev.size() != cur.size()) throw Error("road homography: one current pixel per track");
+  if (prev_road_mask.empty()) return std::nullopt;
+  std::vector<cv::Point2f> from, to;
+  for (size_t i = 0; i < prev.size(); ++i) {
+    if (!OnMask(prev_road_mask, prev[i])) continue;
+    from.emplace_back(static_cast<float>(prev[i].x()), static_cast<float>(prev[i].y()));
+    to.emplace_back(static_cast<float>(cur[i].x()), static_cast<float>(cur[i].y()));
+  }
+  if (static_cast<int>(from.size()) < options.road_min_tracks) return std::nullopt;
+  // OpenCV's RANSAC draws from a generator with a fixed seed: the same tracks give the same fit.
+  std::vector<unsigned char> inliers;
+  const cv::Mat h = cv::findHomography(from, to, cv::RANSAC, options.road_ransac_threshold_px,
+                                       inliers, 2000, 0.995);
+  if (h.empty() || cv::countNonZero(inliers) < options.road_min_tracks) return std::nullopt;
+  Eigen::Matrix3d out;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out(r, c) = h.at<double>(r, c);
+  }
+  if (!out.allFinite() || std::abs(out(2, 2)) < 1e-12) return std::nullopt;
+  return out / out(2, 2);
+}
+
+cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_src) {
+  if (road_mask.empty()) return cv::Mat();
+  cv::Mat out;
+  cv::warpPerspective(road_mask, out, ToCv(cur_from_src), road_mask.size(), cv::INTER_NEAREST,
+                      cv::BORDER_CONSTANT, cv::Scalar(0));
+  return out;
+}
+
+cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur_from_src,
+                         int frames, const MaskCarryOptions& options) {
+  if (dynamic_mask.empty()) return cv::Mat();
+  cv::Mat labels, stats, centroids;
+  const int count =
+      cv::connectedComponentsWithStats(dynamic_mask, labels, stats, centroids, 8, CV_32S);
+  cv::Mat out(dynamic_mask.size(), CV_8UC1, cv::Scalar(0));
+  const cv::Rect image(0, 0, dynamic_mask.cols, dynamic_mask.rows);
+  for (int i = 1; i < count; ++i) {
+    const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                       stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+    const cv::Mat blob = labels(box) == i;
+    // The blob's base: the middle of its lowest row, where it meets the road.
+    const Eigen::Vector2d base(box.x + 0.5 * (box.width - 1), box.y + box.height - 1);
+    const Eigen::Vector3d mapped = cur_from_src * base.homogeneous();
+    double scale = 1.0;
+    Eigen::Vector2d moved = base;
+    if (mapped.z() > 1e-9) {
+      moved = mapped.hnormalized();
+      // An upright object scales as the road's width at its base does: the homography's
+      // horizontal magnification there (its vertical one is that of the ground, squared).
+      const Eigen::Vector3d& h0 = cur_from_src.row(0);
+      const Eigen::Vector3d& h1 = cur_from_src.row(1);
+      const Eigen::Vector3d& h2 = cur_from_src.row(2);
+      Eigen::Matrix2d jacobian;
+      for (int c = 0; c < 2; ++c) {
+        jacobian(0, c) = (h0(c) - moved.x() * h2(c)) / mapped.z();
+        jacobian(1, c) = (h1(c) - moved.y() * h2(c)) / mapped.z();
+      }
+      scale = std::clamp(jacobian.col(0).norm(), 0.5, 2.0);
+    }
+    // p' = moved + scale (p - base), in the blob's box and the destination box.
+    const cv::Rect2d target(moved.x() - scale * (base.x() - box.x),
+                            moved.y() - scale * (base.y() - box.y), scale * box.width,
+                            scale * box.height);
+    const cv::Rect destination =
+        cv::Rect(cv::Point(static_cast<int>(std::floor(target.x)),
+                           static_cast<int>(std::floor(target.y))),
+                 cv::Point(static_cast<int>(std::ceil(target.x + target.width)) + 1,
+                           static_cast<int>(std::ceil(target.y + target.height)) + 1)) &
+        image;
+    if (destination.empty()) continue;
+    const cv::Matx23d affine(scale, 0.0, target.x - destination.x, 0.0, scale,
+                             target.y - destination.y);
+    cv::Mat warped;
+    cv::warpAffine(blob, warped, affine, destination.size(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+                   cv::Scalar(0));
+    out(destination) |= warped;
+  }
+  const int radius = static_cast<int>(std::lround(options.dynamic_growth_px_per_frame * frames));
+  if (radius > 0) {
+    cv::dilate(out, out,
+               cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * radius + 1, 2 * radius + 1)));
+  }
+  return out;
+}
+
+}  // namespace roadscale
