@@ -9,7 +9,7 @@
 // MaskCarryOptions' defaults) and compared with frame t+d's fresh masks: IoU pooled over the
 // frames, and the share of frame t+d's (undilated) moving-object pixels the carried mask
 // misses. The same for plain reuse (no carrying). Then the frames the keyframe schedule
-// would segment (SegmentationSchedule with the Mapping defaults) and the road IoU of the
+// would segment (SegmentationSchedule, default options) and the road IoU of the
 // masks the other frames get, carried from the last segmented frame.
 #include <cstdio>
 #include <cstdlib>
@@ -117,7 +117,7 @@ void Run(int frames, const std::string& size) {
   }
 
   // The keyframe schedule on these frames, and the road masks the frames between get.
-  SegmentationSchedule schedule(camera, KeyframeSelectorOptions());
+  SegmentationSchedule schedule(camera, SegmentationScheduleOptions().keyframes);
   Pooled road;
   Missed missed;
   int segmented = 0, carried_frames = 0;

@@ -38,7 +38,7 @@ class CarriedFrontend {
       : pipeline_(pipeline),
         service_(service),
         carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames),
-        schedule_(camera, options.mapping.keyframes) {}
+        schedule_(camera, options.segmentation_schedule.keyframes) {}
 
   CarriedFrame Track(const SegmentedFrame& input) {
     const int index = static_cast<int>(input.frame.index);

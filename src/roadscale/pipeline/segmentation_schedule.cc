@@ -16,6 +16,7 @@ std::string SegmentationScheduleModeName(SegmentationScheduleMode mode) {
 }
 
 void SegmentationScheduleOptions::Check() const {
+  keyframes.Check();
   CheckOption(latency_frames >= 1 && latency_frames <= 30, "segmentation.latency_frames",
               "must be in 1..30 (a frame's own masks are decided after it is tracked)");
   carry.Check();

@@ -18,13 +18,14 @@ double Iou(const cv::Mat& a, const cv::Mat& b) {
 }
 
 // The homography a road plane 1.65 m below a camera (fx = 700, 1200x360) induces when the
-// camera moves `forward_m` ahead: H = K (I - t n^T / h) K^-1 with t = (0, 0, -forward).
+// camera moves `forward_m` ahead: X_cur = X_prev + t with t = (0, 0, -forward), and on the
+// plane n^T X_prev = h, so H = K (I + t n^T / h) K^-1.
 Eigen::Matrix3d RoadHomography(double forward_m) {
   Eigen::Matrix3d k;
   k << 700, 0, 600, 0, 700, 180, 0, 0, 1;
   const Eigen::Vector3d t(0.0, 0.0, -forward_m);
   const Eigen::Vector3d n(0.0, 1.0, 0.0);
-  return k * (Eigen::Matrix3d::Identity() - t * n.transpose() / 1.65) * k.inverse();
+  return k * (Eigen::Matrix3d::Identity() + t * n.transpose() / 1.65) * k.inverse();
 }
 
 Eigen::Vector2d Apply(const Eigen::Matrix3d& h, const Eigen::Vector2d& p) {
@@ -61,12 +62,12 @@ TEST(MaskCarrying, FitsTheRoadHomographyToTheTracksOnTheRoadMask) {
 }
 
 TEST(MaskCarrying, CarriesARoadMaskThroughItsHomography) {
-  // A road patch drawn as the image of a road rectangle; after 1.5 m of travel it must be the
-  // image of the same rectangle from the new position.
+  // A road patch (4 m wide, 8 to 14 m ahead) drawn as the image of a road rectangle; after
+  // 1.5 m of travel it must be the image of the same rectangle from the new position.
   const auto draw = [](double forward_m) {
     cv::Mat mask(360, 1200, CV_8UC1, cv::Scalar(0));
     std::vector<cv::Point> corners;
-    for (const auto& [x, z] : {std::pair{-2.0, 6.0}, {2.0, 6.0}, {2.0, 20.0}, {-2.0, 20.0}}) {
+    for (const auto& [x, z] : {std::pair{-2.0, 8.0}, {2.0, 8.0}, {2.0, 14.0}, {-2.0, 14.0}}) {
       const double depth = z - forward_m;
       corners.emplace_back(static_cast<int>(std::lround(600 + 700 * x / depth)),
                            static_cast<int>(std::lround(180 + 700 * 1.65 / depth)));
@@ -76,7 +77,7 @@ TEST(MaskCarrying, CarriesARoadMaskThroughItsHomography) {
   };
   const cv::Mat carried = CarryRoadMask(draw(0.0), RoadHomography(1.5));
   EXPECT_GT(Iou(carried, draw(1.5)), 0.97);
-  EXPECT_LT(Iou(draw(0.0), draw(1.5)), 0.85);  // not carrying at all is much worse
+  EXPECT_LT(Iou(draw(0.0), draw(1.5)), 0.8);  // not carrying at all is much worse
 }
 
 TEST(MaskCarrying, MovesACarWithTheRoadUnderItAndGrowsItForItsOwnMotion) {
@@ -97,15 +98,15 @@ TEST(MaskCarrying, MovesACarWithTheRoadUnderItAndGrowsItForItsOwnMotion) {
   const cv::Mat carried = CarryDynamicMask(draw(10.0, 0.0), RoadHomography(1.0), 1, exact);
   EXPECT_GT(Iou(carried, draw(9.0, 0.0)), 0.93);
 
-  // The car drives off to the side by 3 px a frame, which the road does not explain: two
-  // frames later the 2 px a frame of growth still covers it.
-  const cv::Mat moving = draw(8.0, 6.0);
+  // The car drives off to the side by 1.5 px a frame, which the road does not explain: two
+  // frames later the 2 px a frame of growth still covers it, and without growth it would not.
+  const cv::Mat moving = draw(8.0, 3.0);
   const cv::Mat grown =
       CarryDynamicMask(draw(10.0, 0.0), RoadHomography(2.0), 2, MaskCarryOptions());
   const double missed = 1.0 - cv::countNonZero(grown & moving) / double(cv::countNonZero(moving));
   EXPECT_LT(missed, 0.02);
   const cv::Mat ungrown = CarryDynamicMask(draw(10.0, 0.0), RoadHomography(2.0), 2, exact);
-  EXPECT_GT(1.0 - cv::countNonZero(ungrown & moving) / double(cv::countNonZero(moving)), 0.03);
+  EXPECT_GT(1.0 - cv::countNonZero(ungrown & moving) / double(cv::countNonZero(moving)), 0.01);
   EXPECT_TRUE(CarryDynamicMask(cv::Mat(), RoadHomography(1.0), 1, exact).empty());
 }
 
