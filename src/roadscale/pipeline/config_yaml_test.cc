@@ -39,10 +39,11 @@ TEST(RunConfigYaml, DefaultsAreTheModulesDefaults) {
 
 TEST(RunConfigYaml, ReadsGivenKeysAndKeepsTheOthers) {
   testing::TempDir dir;
-  const std::string path = WriteFile(dir,
-                                     "Camera:\n  h0: 1.5\nFrontend:\n  detector: orb\n"
-                                     "Scale:\n  filter_gaussian_sigma: 3\n  vote_edge_visit: "
-                                     "per_edge\nSegmentation:\n  schedule: every_frame\n  every: 2\n");
+  const std::string path =
+      WriteFile(dir,
+                "Camera:\n  h0: 1.5\nFrontend:\n  detector: orb\n"
+                "Scale:\n  filter_gaussian_sigma: 3\n  vote_edge_visit: "
+                "per_edge\nSegmentation:\n  schedule: every_frame\n  every: 2\n");
   RunConfig config;
   ReadRunConfig(path, &config);
   EXPECT_EQ(*config.camera.h0, 1.5);
