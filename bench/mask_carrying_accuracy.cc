@@ -9,8 +9,9 @@
 // MaskCarryOptions' defaults) and compared with frame t+d's fresh masks: IoU pooled over the
 // frames, and the share of frame t+d's (undilated) moving-object pixels the carried mask
 // misses. The same for plain reuse (no carrying). Then the frames the keyframe schedule
-// would segment (SegmentationSchedule, default options) and the road IoU of the
-// masks the other frames get, carried from the last segmented frame.
+// would segment (SegmentationSchedule at several parallax thresholds) and the IoU of the masks
+// every frame gets carried from the last segmented frame before it (what the frontend uses
+// without latency; the scale stage has the segmented frames' own fresh masks).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -116,45 +117,49 @@ void Run(int frames, const std::string& size) {
         missed_reused.Percent());
   }
 
-  // The keyframe schedule on these frames, and the road masks the frames between get.
-  SegmentationSchedule schedule(camera, SegmentationScheduleOptions().keyframes);
-  Pooled road;
-  Missed missed;
-  int segmented = 0, carried_frames = 0;
-  std::vector<int> gaps;
-  int last_segmented = 0;
-  Eigen::Matrix3d cur_from_segmented = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d last = Eigen::Matrix3d::Identity();
-  cv::Mat carried_road;
-  for (int t = 0; t < frames; ++t) {
-    bool failed = false;
-    if (t > 0) {
-      failed = !step(t, carried_road, &last);
-      cur_from_segmented = last * cur_from_segmented;
-      carried_road = CarryRoadMask(fresh[last_segmented].road_mask, cur_from_segmented);
-      road.Add(carried_road, fresh[t].road_mask);
-      missed.Add(CarryDynamicMask(fresh[last_segmented].dynamic_mask, cur_from_segmented,
-                                  t - last_segmented, carry),
-                 fresh[t].labels);
-      ++carried_frames;
+  // The keyframe schedule at several parallax thresholds (the default: 30 px), and the masks
+  // every frame gets carried from the last segmented frame before it.
+  std::printf("keyframe schedule: threshold | segmented | mean spacing | road IoU | dynamic "
+              "IoU | dynamic missed\n");
+  for (const double parallax_px : {10.0, 20.0, 30.0, 40.0, 60.0}) {
+    KeyframeSelectorOptions schedule_options = SegmentationScheduleOptions().keyframes;
+    schedule_options.min_parallax_px = parallax_px;
+    SegmentationSchedule schedule(camera, schedule_options);
+    Pooled road, dynamic;
+    Missed missed;
+    int segmented = 0;
+    std::vector<int> gaps;
+    int last_segmented = 0;
+    Eigen::Matrix3d cur_from_segmented = Eigen::Matrix3d::Identity();
+    Eigen::Matrix3d last = Eigen::Matrix3d::Identity();
+    cv::Mat carried_road;
+    for (int t = 0; t < frames; ++t) {
+      bool failed = false;
+      if (t > 0) {
+        failed = !step(t, carried_road, &last);
+        cur_from_segmented = last * cur_from_segmented;
+        carried_road = CarryRoadMask(fresh[last_segmented].road_mask, cur_from_segmented);
+        const cv::Mat carried_dynamic = CarryDynamicMask(
+            fresh[last_segmented].dynamic_mask, cur_from_segmented, t - last_segmented, carry);
+        road.Add(carried_road, fresh[t].road_mask);
+        dynamic.Add(carried_dynamic, fresh[t].dynamic_mask);
+        missed.Add(carried_dynamic, fresh[t].labels);
+      }
+      if (schedule.Decide(tracked[t], failed)) {
+        ++segmented;
+        if (t > 0) gaps.push_back(t - last_segmented);
+        last_segmented = t;
+        cur_from_segmented.setIdentity();
+        carried_road = fresh[t].road_mask;
+      }
     }
-    if (schedule.Decide(tracked[t], failed)) {
-      ++segmented;
-      if (t > 0) gaps.push_back(t - last_segmented);
-      last_segmented = t;
-      cur_from_segmented.setIdentity();
-      carried_road = fresh[t].road_mask;
-    }
+    double mean_gap = 0.0;
+    for (int gap : gaps) mean_gap += gap;
+    std::printf("  %4.0f px | %3d of %d (%4.1f %%) | %.2f frames | %.3f | %.3f | %4.1f %%\n",
+                parallax_px, segmented, frames, 100.0 * segmented / frames,
+                gaps.empty() ? 0.0 : mean_gap / gaps.size(), road.Iou(), dynamic.Iou(),
+                missed.Percent());
   }
-  double mean_gap = 0.0;
-  for (int gap : gaps) mean_gap += gap;
-  std::printf(
-      "keyframe schedule: %d of %d frames segmented (%.1f %%), mean spacing %.2f frames;"
-      " every frame's masks carried from the last segmented one (segmented frames "
-      "included, before their own masks): road IoU %.3f, dynamic missed %.1f %% "
-      "(%d frames)\n",
-      segmented, frames, 100.0 * segmented / frames, gaps.empty() ? 0.0 : mean_gap / gaps.size(),
-      road.Iou(), missed.Percent(), carried_frames);
 }
 
 }  // namespace
