@@ -119,8 +119,9 @@ void Run(int frames, const std::string& size) {
 
   // The keyframe schedule at several parallax thresholds (the default: 30 px), and the masks
   // every frame gets carried from the last segmented frame before it.
-  std::printf("keyframe schedule: threshold | segmented | mean spacing | road IoU | dynamic "
-              "IoU | dynamic missed\n");
+  std::printf(
+      "keyframe schedule: threshold | segmented | mean spacing | road IoU | dynamic "
+      "IoU | dynamic missed\n");
   for (const double parallax_px : {10.0, 20.0, 30.0, 40.0, 60.0}) {
     KeyframeSelectorOptions schedule_options = SegmentationScheduleOptions().keyframes;
     schedule_options.min_parallax_px = parallax_px;

@@ -11,6 +11,9 @@
 namespace roadscale {
 namespace {
 
+// Width of the strips a moving-object mask is cut into, each moved on its own.
+constexpr int kStripWidthPx = 16;
+
 cv::Matx33d ToCv(const Eigen::Matrix3d& m) {
   cv::Matx33d out;
   for (int r = 0; r < 3; ++r) {
@@ -23,6 +26,42 @@ bool OnMask(const cv::Mat& mask, const Eigen::Vector2d& p) {
   const int x = static_cast<int>(std::lround(p.x()));
   const int y = static_cast<int>(std::lround(p.y()));
   return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<unsigned char>(y, x) != 0;
+}
+
+// Moves one piece of a moving-object mask (its pixels `piece` at `rect`) as the road under the
+// middle of its lowest row moves, scaled by the road's horizontal magnification there (an
+// upright object's width scales as the road's at its base; the vertical magnification is that
+// of the ground, squared), and adds it to `out`.
+void CarryPiece(const cv::Mat& piece, const cv::Rect& rect, const Eigen::Matrix3d& cur_from_src,
+                const cv::Rect& image, cv::Mat* out) {
+  const Eigen::Vector2d base(rect.x + 0.5 * (rect.width - 1), rect.y + rect.height - 1);
+  const Eigen::Vector3d mapped = cur_from_src * base.homogeneous();
+  double scale = 1.0;
+  Eigen::Vector2d moved = base;
+  // A base the homography cannot map (above the horizon: not on the road) stays in place.
+  if (mapped.z() > 1e-9) {
+    moved = mapped.hnormalized();
+    const Eigen::Vector3d h0 = cur_from_src.row(0);
+    const Eigen::Vector3d h2 = cur_from_src.row(2);
+    const Eigen::Vector3d h1 = cur_from_src.row(1);
+    const Eigen::Vector2d d_dx((h0(0) - moved.x() * h2(0)) / mapped.z(),
+                               (h1(0) - moved.y() * h2(0)) / mapped.z());
+    scale = std::clamp(d_dx.norm(), 0.5, 2.0);
+  }
+  // p' = moved + scale (p - base), in the piece's box and in the destination box.
+  const double left = moved.x() - scale * (base.x() - rect.x);
+  const double top = moved.y() - scale * (base.y() - rect.y);
+  const cv::Rect destination =
+      cv::Rect(cv::Point(static_cast<int>(std::floor(left)), static_cast<int>(std::floor(top))),
+               cv::Point(static_cast<int>(std::ceil(left + scale * rect.width)) + 1,
+                         static_cast<int>(std::ceil(top + scale * rect.height)) + 1)) &
+      image;
+  if (destination.empty()) return;
+  const cv::Matx23d affine(scale, 0.0, left - destination.x, 0.0, scale, top - destination.y);
+  cv::Mat warped;
+  cv::warpAffine(piece, warped, affine, destination.size(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+                 cv::Scalar(0));
+  (*out)(destination) |= warped;
 }
 
 }  // namespace
@@ -73,51 +112,23 @@ cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_
 cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur_from_src,
                          int frames, const MaskCarryOptions& options) {
   if (dynamic_mask.empty()) return cv::Mat();
-  cv::Mat labels, stats, centroids;
-  const int count =
-      cv::connectedComponentsWithStats(dynamic_mask, labels, stats, centroids, 8, CV_32S);
   cv::Mat out(dynamic_mask.size(), CV_8UC1, cv::Scalar(0));
   const cv::Rect image(0, 0, dynamic_mask.cols, dynamic_mask.rows);
-  for (int i = 1; i < count; ++i) {
-    const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
-                       stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
-    const cv::Mat blob = labels(box) == i;
-    // The blob's base: the middle of its lowest row, where it meets the road.
-    const Eigen::Vector2d base(box.x + 0.5 * (box.width - 1), box.y + box.height - 1);
-    const Eigen::Vector3d mapped = cur_from_src * base.homogeneous();
-    double scale = 1.0;
-    Eigen::Vector2d moved = base;
-    if (mapped.z() > 1e-9) {
-      moved = mapped.hnormalized();
-      // An upright object scales as the road's width at its base does: the homography's
-      // horizontal magnification there (its vertical one is that of the ground, squared).
-      const Eigen::Vector3d& h0 = cur_from_src.row(0);
-      const Eigen::Vector3d& h1 = cur_from_src.row(1);
-      const Eigen::Vector3d& h2 = cur_from_src.row(2);
-      Eigen::Matrix2d jacobian;
-      for (int c = 0; c < 2; ++c) {
-        jacobian(0, c) = (h0(c) - moved.x() * h2(c)) / mapped.z();
-        jacobian(1, c) = (h1(c) - moved.y() * h2(c)) / mapped.z();
-      }
-      scale = std::clamp(jacobian.col(0).norm(), 0.5, 2.0);
+  // Parked cars along a street merge into one blob spanning many depths: each narrow strip of
+  // the mask moves with the road under its own lowest pixel.
+  for (int x0 = 0; x0 < dynamic_mask.cols; x0 += kStripWidthPx) {
+    const cv::Rect strip_rect(x0, 0, std::min(kStripWidthPx, dynamic_mask.cols - x0),
+                              dynamic_mask.rows);
+    const cv::Mat strip = dynamic_mask(strip_rect);
+    cv::Mat labels, stats, centroids;
+    const int count = cv::connectedComponentsWithStats(strip, labels, stats, centroids, 8, CV_32S);
+    for (int i = 1; i < count; ++i) {
+      const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                         stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+      const cv::Mat piece = labels(box) == i;
+      const cv::Rect piece_rect = box + strip_rect.tl();
+      CarryPiece(piece, piece_rect, cur_from_src, image, &out);
     }
-    // p' = moved + scale (p - base), in the blob's box and the destination box.
-    const cv::Rect2d target(moved.x() - scale * (base.x() - box.x),
-                            moved.y() - scale * (base.y() - box.y), scale * box.width,
-                            scale * box.height);
-    const cv::Rect destination =
-        cv::Rect(cv::Point(static_cast<int>(std::floor(target.x)),
-                           static_cast<int>(std::floor(target.y))),
-                 cv::Point(static_cast<int>(std::ceil(target.x + target.width)) + 1,
-                           static_cast<int>(std::ceil(target.y + target.height)) + 1)) &
-        image;
-    if (destination.empty()) continue;
-    const cv::Matx23d affine(scale, 0.0, target.x - destination.x, 0.0, scale,
-                             target.y - destination.y);
-    cv::Mat warped;
-    cv::warpAffine(blob, warped, affine, destination.size(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
-                   cv::Scalar(0));
-    out(destination) |= warped;
   }
   const int radius = static_cast<int>(std::lround(options.dynamic_growth_px_per_frame * frames));
   if (radius > 0) {

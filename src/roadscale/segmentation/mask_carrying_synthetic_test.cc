@@ -25,8 +25,8 @@ double MissedShare(const cv::Mat& mask, const cv::Mat& truth) {
   return total > 0 ? cv::countNonZero(truth & ~mask) / total : 0.0;
 }
 
-TEST(MaskCarryingSynthetic, RoadAndCarsOfARenderedStreetAreCarriedFourFrames) {
-  constexpr int kFrames = 5;
+TEST(MaskCarryingSynthetic, RoadAndCarsOfARenderedStreetAreCarriedEightFrames) {
+  constexpr int kFrames = 9;
   synth::SceneOptions scene_options = synth::PresetSceneOptions("urban");
   scene_options.seed = 1;
   synth::SyntheticScene scene(scene_options, kFrames);
@@ -65,10 +65,12 @@ TEST(MaskCarryingSynthetic, RoadAndCarsOfARenderedStreetAreCarriedFourFrames) {
         "frame %d: road IoU carried %.3f, reused %.3f; car pixels missed %.3f, "
         "reused %.3f\n",
         i, carried_iou, reused_iou, missed, MissedShare(cars[0], cars[i]));
-    // Measured: 0.99 / 0.98 / 0.97 / 0.96 at 1-4 frames (reused: 0.95 / 0.91 / 0.88 / 0.87).
-    EXPECT_GT(carried_iou, 0.95) << "frame " << i;
+    // Measured: 0.99 / 0.98 / 0.97 / 0.96 at 1-4 frames, 0.93-0.94 at 5-8 (reused: 0.95 /
+    // 0.91 / 0.88 / 0.87, 0.81-0.87).
+    EXPECT_GT(carried_iou, 0.92) << "frame " << i;
     EXPECT_GT(carried_iou, reused_iou + 0.02) << "frame " << i;
-    // Measured: 1-2 % of the car pixels missed at 1-4 frames (reused: 7-25 %).
+    // Measured: 0.3-3.5 % of the car pixels (the parked cars along the street merge into one
+    // blob spanning many depths) missed at 1-8 frames (reused: 8-45 %).
     EXPECT_LT(missed, 0.05) << "frame " << i;
     EXPECT_LT(missed, 0.5 * MissedShare(cars[0], cars[i])) << "frame " << i;
   }
