@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -103,9 +105,35 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
 
 cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_src) {
   if (road_mask.empty()) return cv::Mat();
-  cv::Mat out;
-  cv::warpPerspective(road_mask, out, ToCv(cur_from_src), road_mask.size(), cv::INTER_NEAREST,
+  cv::Mat out(road_mask.size(), CV_8UC1, cv::Scalar(0));
+  // Only where the source's road can land: the road covers the lower part of a frame, and
+  // warping the whole frame costs 4 ms.
+  const cv::Rect source = cv::boundingRect(road_mask);
+  if (source.empty()) return out;
+  cv::Rect target(0, 0, road_mask.cols, road_mask.rows);
+  std::vector<cv::Point2f> corners;
+  for (const auto& [x, y] : {std::pair{source.x, source.y},
+                             {source.x + source.width, source.y},
+                             {source.x, source.y + source.height},
+                             {source.x + source.width, source.y + source.height}}) {
+    const Eigen::Vector3d p = cur_from_src * Eigen::Vector3d(x, y, 1.0);
+    if (!(p.z() > 1e-9)) {
+      corners.clear();
+      break;
+    }
+    corners.emplace_back(static_cast<float>(p.x() / p.z()), static_cast<float>(p.y() / p.z()));
+  }
+  if (!corners.empty()) {
+    target &= cv::boundingRect(corners) + cv::Size(2, 2) - cv::Point(1, 1);
+    if (target.empty()) return out;
+  }
+  Eigen::Matrix3d roi_from_src = cur_from_src;
+  roi_from_src.row(0) -= target.x * cur_from_src.row(2);
+  roi_from_src.row(1) -= target.y * cur_from_src.row(2);
+  cv::Mat warped;
+  cv::warpPerspective(road_mask, warped, ToCv(roi_from_src), target.size(), cv::INTER_NEAREST,
                       cv::BORDER_CONSTANT, cv::Scalar(0));
+  warped.copyTo(out(target));
   return out;
 }
 
@@ -119,14 +147,16 @@ cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur
   for (int x0 = 0; x0 < dynamic_mask.cols; x0 += kStripWidthPx) {
     const cv::Rect strip_rect(x0, 0, std::min(kStripWidthPx, dynamic_mask.cols - x0),
                               dynamic_mask.rows);
-    const cv::Mat strip = dynamic_mask(strip_rect);
+    const cv::Rect occupied = cv::boundingRect(dynamic_mask(strip_rect)) + strip_rect.tl();
+    if (occupied.empty()) continue;
     cv::Mat labels, stats, centroids;
-    const int count = cv::connectedComponentsWithStats(strip, labels, stats, centroids, 8, CV_32S);
+    const int count = cv::connectedComponentsWithStats(dynamic_mask(occupied), labels, stats,
+                                                       centroids, 8, CV_32S);
     for (int i = 1; i < count; ++i) {
       const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
                          stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
       const cv::Mat piece = labels(box) == i;
-      const cv::Rect piece_rect = box + strip_rect.tl();
+      const cv::Rect piece_rect = box + occupied.tl();
       CarryPiece(piece, piece_rect, cur_from_src, image, &out);
     }
   }
