@@ -9,7 +9,7 @@
 // MaskCarryOptions' defaults) and compared with frame t+d's fresh masks: IoU pooled over the
 // frames, and the share of frame t+d's (undilated) moving-object pixels the carried mask
 // misses. The same for plain reuse (no carrying). Then the frames the keyframe schedule
-// would segment (SegmentationSchedule at several parallax thresholds) and the IoU of the masks
+// would segment (SegmentationSchedule at several thresholds) and the IoU of the masks
 // every frame gets carried from the last segmented frame before it (what the frontend uses
 // without latency; the scale stage has the segmented frames' own fresh masks).
 #include <cstdio>
@@ -122,9 +122,12 @@ void Run(int frames, const std::string& size) {
   std::printf(
       "keyframe schedule: threshold | segmented | mean spacing | road IoU | dynamic "
       "IoU | dynamic missed\n");
-  for (const double parallax_px : {10.0, 20.0, 30.0, 40.0, 60.0}) {
+  // (parallax px, tracked share): the back end's keyframes, then the default's neighbours.
+  for (const auto& [parallax_px, tracked_share] :
+       {std::pair{10.0, 0.5}, {30.0, 0.5}, {30.0, 0.3}, {30.0, 0.2}, {60.0, 0.3}}) {
     KeyframeSelectorOptions schedule_options = SegmentationScheduleOptions().keyframes;
     schedule_options.min_parallax_px = parallax_px;
+    schedule_options.min_tracked_share = tracked_share;
     SegmentationSchedule schedule(camera, schedule_options);
     Pooled road, dynamic;
     Missed missed;
@@ -156,8 +159,8 @@ void Run(int frames, const std::string& size) {
     }
     double mean_gap = 0.0;
     for (int gap : gaps) mean_gap += gap;
-    std::printf("  %4.0f px | %3d of %d (%4.1f %%) | %.2f frames | %.3f | %.3f | %4.1f %%\n",
-                parallax_px, segmented, frames, 100.0 * segmented / frames,
+    std::printf("  %4.0f px, %.1f | %3d of %d (%4.1f %%) | %.2f frames | %.3f | %.3f | %4.1f %%\n",
+                parallax_px, tracked_share, segmented, frames, 100.0 * segmented / frames,
                 gaps.empty() ? 0.0 : mean_gap / gaps.size(), road.Iou(), dynamic.Iou(),
                 missed.Percent());
   }

@@ -39,11 +39,11 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
 // come from outside the source image are not road).
 cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_src);
 
-// A moving-object mask carried `frames` frames: cut into 16 px wide strips, each blob of a
-// strip moved as the road under its lowest pixel moves (and scaled by the road homography's
-// horizontal magnification there: a car stands upright on the road), then the whole mask grown
-// by dynamic_growth_px_per_frame per frame for the objects' own motion. Pieces whose base the
-// homography cannot map stay in place.
+// A moving-object mask carried `frames` frames (at half resolution): cut into 16 px wide strips,
+// each blob of a strip moved as the road under its lowest pixel moves (and scaled by the road
+// homography's horizontal magnification there: a car stands upright on the road), then the whole
+// mask grown by dynamic_growth_px_per_frame per frame for the objects' own motion. Pieces whose
+// base the homography cannot map stay in place.
 cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur_from_src,
                          int frames, const MaskCarryOptions& options);
 
