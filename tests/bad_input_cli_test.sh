@@ -214,9 +214,11 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   done
   s="$(copy_sequence bad_label)"
   head -c 200 "$seq/semantic/000003.png" >"$s/semantic/000003.png"
+  # Every frame's labels read: the default schedule reads only the keyframes' (frame 3 is none).
+  printf 'Segmentation:\n  schedule: every_frame\n' >"$out/every_frame.yaml"
   expect_error 1 "semantic/000003\.png: cannot decode label image \(truncated in chunk IDAT\)" \
     "$roadscale" run --kitti "$s" --labels "$s/semantic" --scale oracle --sequential \
-    --out "$out/bad_label.run"
+    --config "$out/every_frame.yaml" --out "$out/bad_label.run"
   check_pose_rows "$out/bad_label.run" 3
   if $can_deny; then
     s="$(copy_sequence denied)"

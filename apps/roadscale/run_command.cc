@@ -200,7 +200,8 @@ void RunRun(const RunArguments& arguments) {
             << '\n'
             << "Frontend: " << DetectorTypeName(config.pipeline.frontend.tracker.detector.type)
             << " features\n"
-            << "Segmentation: " << segmentation_text << '\n'
+            << "Segmentation: " << segmentation_text << " (schedule "
+            << SegmentationScheduleModeName(config.pipeline.segmentation_schedule.mode) << ")\n"
             << std::flush;
 
   // The progress line, on a terminal only (logs and CI stay clean).
@@ -255,7 +256,11 @@ void RunRun(const RunArguments& arguments) {
       {"config", arguments.config.empty() ? "defaults" : arguments.config},
       {"segmentation", segmentation_text},
       {"scale", scale_source->Name()},
-      {"mapping", MappingModeName(config.pipeline.mapping.mode)}};
+      {"mapping", MappingModeName(config.pipeline.mapping.mode)},
+      {"segmented frames",
+       std::to_string(result.summary.segmented_frames) + " of " +
+           std::to_string(result.summary.frames) + " (schedule " +
+           SegmentationScheduleModeName(config.pipeline.segmentation_schedule.mode) + ")"}};
   report.records = std::move(records);
   report.scale_diagnostics_header =
       keyframe_mode ? MappedFrameCsvHeader() : scale_source->DiagnosticsCsvHeader();

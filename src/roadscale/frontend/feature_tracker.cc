@@ -82,20 +82,10 @@ int FeatureTracker::Track(int frame_index, const cv::Mat& image, const cv::Mat& 
         ++stats_.lost;
         continue;
       }
-      const cv::Point2f& p = klt.points[i];
-      if (!dynamic_mask.empty()) {
-        const int x = std::clamp(static_cast<int>(std::lround(p.x)), 0, image.cols - 1);
-        const int y = std::clamp(static_cast<int>(std::lround(p.y)), 0, image.rows - 1);
-        if (dynamic_mask.at<unsigned char>(y, x) != 0) {
-          ++stats_.dropped_dynamic;
-          continue;
-        }
-      }
       alive.push_back(std::move(tracks_[i]));
-      alive.back().pixels.emplace_back(p.x, p.y);
+      alive.back().pixels.emplace_back(klt.points[i].x, klt.points[i].y);
     }
     tracks_ = std::move(alive);
-    stats_.tracked = static_cast<int>(tracks_.size());
     stats_.tracking_ms = MillisecondsSince(start);
   } else {
     tracks_.clear();
@@ -104,7 +94,34 @@ int FeatureTracker::Track(int frame_index, const cv::Mat& image, const cv::Mat& 
   pyramid_ = std::move(pyramid);
   image_ = image.clone();
   current_frame_ = frame_index;
+  DropOnMask(dynamic_mask);
   return stats_.tracked;
+}
+
+void FeatureTracker::DropOnMask(const cv::Mat& dynamic_mask) {
+  if (!dynamic_mask.empty() &&
+      (dynamic_mask.type() != CV_8UC1 || dynamic_mask.size() != image_.size())) {
+    throw Error("frame " + std::to_string(current_frame_) +
+                ": the dynamic mask must be 8-bit single channel and of the image's size");
+  }
+  if (!dynamic_mask.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    // Only tracks carried into this frame: one born here was detected off the mask.
+    const auto on_mask = [&](const roadscale::Track& track) {
+      if (track.last_frame() != current_frame_ || track.length() < 2) return false;
+      const Eigen::Vector2d& p = track.pixels.back();
+      const int x = std::clamp(static_cast<int>(std::lround(p.x())), 0, dynamic_mask.cols - 1);
+      const int y = std::clamp(static_cast<int>(std::lround(p.y())), 0, dynamic_mask.rows - 1);
+      return dynamic_mask.at<unsigned char>(y, x) != 0;
+    };
+    const size_t before = tracks_.size();
+    tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(), on_mask), tracks_.end());
+    stats_.dropped_dynamic += static_cast<int>(before - tracks_.size());
+    stats_.tracking_ms += MillisecondsSince(start);
+  }
+  stats_.tracked = static_cast<int>(
+      std::count_if(tracks_.begin(), tracks_.end(),
+                    [](const roadscale::Track& track) { return track.length() >= 2; }));
 }
 
 int FeatureTracker::Detect(const cv::Mat& detection_mask, bool force) {

@@ -65,6 +65,12 @@ class FeatureTracker {
   int Track(int frame_index, const cv::Mat& image, const cv::Mat& dynamic_mask,
             const Eigen::Matrix3d& prediction = Eigen::Matrix3d::Identity());
 
+  // Ends the tracks whose pixel in the current frame lies on `dynamic_mask` (as Track does with
+  // its mask), counting them as dropped_dynamic: for masks known only after tracking (masks
+  // carried from an earlier frame through the tracks' motion). Throws Error on a mask of the
+  // wrong type or size.
+  void DropOnMask(const cv::Mat& dynamic_mask);
+
   // Starts new tracks in the current frame where `detection_mask` (CV_8UC1, non-zero =
   // allowed; empty = whole image) allows, when fewer than redetect_below tracks are alive
   // (or always with force). Returns the number of new tracks.

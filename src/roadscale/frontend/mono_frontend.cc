@@ -22,6 +22,13 @@ MonoFrontend::MonoFrontend(const PinholeCamera& camera, const FrontendOptions& o
 FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
                                          const cv::Mat& detection_mask,
                                          const cv::Mat& dynamic_mask) {
+  return ProcessFrame(frame_index, image, [&](const std::vector<Correspondence>&) {
+    return FrontendMasks{detection_mask, dynamic_mask};
+  });
+}
+
+FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
+                                         const FrontendMaskProvider& masks_after_tracking) {
   if (image.cols != camera_.width || image.rows != camera_.height) {
     throw Error("frame " + std::to_string(frame_index) + ": image is " +
                 std::to_string(image.cols) + "x" + std::to_string(image.rows) +
@@ -37,16 +44,18 @@ FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
     const Eigen::Matrix3d K = camera_.K();
     prediction = K * last_rotation_ * K.inverse();
   }
-  tracker_.Track(frame_index, image, dynamic_mask, prediction);
-
-  for (const Track& track : tracker_.tracks()) {
-    if (track.length() < 2) continue;
-    Correspondence c;
-    c.track_id = track.id;
-    c.prev = track.pixels[track.pixels.size() - 2];
-    c.cur = track.pixels.back();
-    frame.correspondences.push_back(c);
-  }
+  tracker_.Track(frame_index, image, cv::Mat(), prediction);
+  const auto correspondences = [&] {
+    std::vector<Correspondence> out;
+    for (const Track& track : tracker_.tracks()) {
+      if (track.length() < 2) continue;
+      out.push_back({track.id, track.pixels[track.pixels.size() - 2], track.pixels.back()});
+    }
+    return out;
+  };
+  const FrontendMasks masks = masks_after_tracking(correspondences());
+  tracker_.DropOnMask(masks.dynamic_mask);
+  frame.correspondences = correspondences();
 
   const auto start = std::chrono::steady_clock::now();
   if (first) {
@@ -68,7 +77,7 @@ FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
     }
     tracker_.Drop(outliers);
   }
-  tracker_.Detect(detection_mask);
+  tracker_.Detect(masks.detection_mask);
 
   // The rotation predicts the next frame's; without a measurement, predict none.
   const MotionStatus status = frame.motion.status;

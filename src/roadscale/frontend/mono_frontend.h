@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -46,6 +47,19 @@ struct FrontendFrame {
   std::vector<TrackObservation> observations;
 };
 
+// The masks a frame's features obey (CV_8UC1 of the image's size; empty = none): where new
+// features may start, and where tracks are dropped as moving objects.
+struct FrontendMasks {
+  cv::Mat detection_mask;
+  cv::Mat dynamic_mask;
+};
+
+// Gives a frame's masks once its tracks are followed into it: `correspondences` are the
+// tracks seen in the previous and this frame (none in the first frame). Lets the masks be
+// carried from an earlier segmented frame through the tracks' own motion.
+using FrontendMaskProvider =
+    std::function<FrontendMasks(const std::vector<Correspondence>& correspondences)>;
+
 // The monocular frontend (the paper's "MonoVO" host): features on a grid, KLT tracking and
 // the two-view motion of every frame. Frames must come in order.
 class MonoFrontend {
@@ -60,6 +74,9 @@ class MonoFrontend {
   FrontendFrame ProcessFrame(int frame_index, const cv::Mat& image,
                              const cv::Mat& detection_mask = cv::Mat(),
                              const cv::Mat& dynamic_mask = cv::Mat());
+  // The same with the masks asked for after KLT, before any track is dropped or detected.
+  FrontendFrame ProcessFrame(int frame_index, const cv::Mat& image,
+                             const FrontendMaskProvider& masks_after_tracking);
 
   // The live tracks after the last frame, with their pixel histories.
   const std::vector<Track>& tracks() const { return tracker_.tracks(); }

@@ -187,9 +187,21 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("min_road_landmarks", &a.bundle_adjustment.min_road_landmarks),
         Scalar("road_outlier_sigmas", &a.bundle_adjustment.road_outlier_sigmas)}},
       {"Segmentation",
-       {Scalar("model", &g.model), Scalar("labels", &c.labels), Scalar("every", &g.every),
-        Scalar("dnn_threads", &g.dnn_threads), Scalar("workers", &g.workers),
-        Scalar("use_dynamic_mask", &g.masks.use_dynamic_mask),
+       {Scalar("model", &g.model), Scalar("labels", &c.labels),
+        Enum("schedule", &c.pipeline.segmentation_schedule.mode, {"every_frame", "keyframes"}),
+        Scalar("latency_frames", &c.pipeline.segmentation_schedule.latency_frames),
+        Scalar("keyframe_min_parallax_px",
+               &c.pipeline.segmentation_schedule.keyframes.min_parallax_px),
+        Scalar("keyframe_min_tracked_share",
+               &c.pipeline.segmentation_schedule.keyframes.min_tracked_share),
+        Scalar("keyframe_max_frame_gap", &c.pipeline.segmentation_schedule.keyframes.max_frame_gap),
+        Scalar("carry_road_min_tracks", &c.pipeline.segmentation_schedule.carry.road_min_tracks),
+        Scalar("carry_road_ransac_threshold_px",
+               &c.pipeline.segmentation_schedule.carry.road_ransac_threshold_px),
+        Scalar("carry_dynamic_growth_px_per_frame",
+               &c.pipeline.segmentation_schedule.carry.dynamic_growth_px_per_frame),
+        Scalar("every", &g.every), Scalar("dnn_threads", &g.dnn_threads),
+        Scalar("workers", &g.workers), Scalar("use_dynamic_mask", &g.masks.use_dynamic_mask),
         Scalar("dynamic_dilation_px", &g.masks.dynamic_dilation_px),
         Scalar("road_erosion_px", &g.masks.road_erosion_px)}},
   };
@@ -243,6 +255,9 @@ void CheckValues(const RunConfig& config) {
   config.pipeline.Check();
   config.scale.Check();
   config.segmentation.Check();
+  CheckOption(config.segmentation.every == 1 || config.pipeline.segmentation_schedule.mode ==
+                                                    SegmentationScheduleMode::kEveryFrame,
+              "segmentation.every", "reuses masks only with schedule: every_frame");
 }
 
 // The options' range checks, with the file and the culprit key's line: the first key without

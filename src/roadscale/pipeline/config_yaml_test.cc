@@ -39,10 +39,11 @@ TEST(RunConfigYaml, DefaultsAreTheModulesDefaults) {
 
 TEST(RunConfigYaml, ReadsGivenKeysAndKeepsTheOthers) {
   testing::TempDir dir;
-  const std::string path = WriteFile(dir,
-                                     "Camera:\n  h0: 1.5\nFrontend:\n  detector: orb\n"
-                                     "Scale:\n  filter_gaussian_sigma: 3\n  vote_edge_visit: "
-                                     "per_edge\nSegmentation:\n  every: 2\n");
+  const std::string path =
+      WriteFile(dir,
+                "Camera:\n  h0: 1.5\nFrontend:\n  detector: orb\n"
+                "Scale:\n  filter_gaussian_sigma: 3\n  vote_edge_visit: "
+                "per_edge\nSegmentation:\n  schedule: every_frame\n  every: 2\n");
   RunConfig config;
   ReadRunConfig(path, &config);
   EXPECT_EQ(*config.camera.h0, 1.5);
@@ -51,7 +52,12 @@ TEST(RunConfigYaml, ReadsGivenKeysAndKeepsTheOthers) {
   EXPECT_EQ(config.scale.filter.gaussian_sigma, 3.0);
   EXPECT_EQ(config.scale.depth_vote.edge_visit, DepthConsistencyVoteOptions::EdgeVisit::kPerEdge);
   EXPECT_EQ(config.segmentation.every, 2);
+  EXPECT_EQ(config.pipeline.segmentation_schedule.mode, SegmentationScheduleMode::kEveryFrame);
   EXPECT_EQ(config.scale.filter.window, 5);
+  // Reusing masks over k frames is the every-frame schedule's; with keyframes it is an error.
+  const std::string both = WriteFile(dir, "Segmentation:\n  every: 2\n");
+  RunConfig defaults;
+  EXPECT_THROW(ReadRunConfig(both, &defaults), Error);
 }
 
 TEST(RunConfigYaml, WrittenConfigReadsBackToTheSameFile) {
@@ -106,6 +112,7 @@ TEST(RunConfigYaml, RealtimeConfigSegmentsEveryOtherFrameOnTwoThreads) {
   EXPECT_EQ(config.segmentation.dnn_threads, 2);
   config.segmentation.every = 1;
   config.segmentation.dnn_threads = 1;
+  config.pipeline.segmentation_schedule.mode = SegmentationScheduleMode::kKeyframes;
   EXPECT_EQ(FormatRunConfig(config), FormatRunConfig(RunConfig()));
 }
 

@@ -12,6 +12,8 @@
 #include <opencv2/core/utility.hpp>
 
 #include "roadscale/pipeline/bounded_queue.h"
+#include "roadscale/pipeline/carried_segmentation_run.h"
+#include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -34,7 +36,9 @@ bool LoadAndSegment(FrameSource& source, Segmenter& segmenter, SegmentedFrame* o
   const Clock::time_point start = Clock::now();
   if (!source.Next(&out->frame)) return false;
   out->load_ms = MillisecondsSince(start);
+  const double cpu_start = ThreadCpuMs();
   out->segmentation = segmenter.Segment(out->frame.image, FrameName(out->frame));
+  out->segmentation_cpu_ms = ThreadCpuMs() - cpu_start;
   return true;
 }
 
@@ -96,7 +100,9 @@ bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
           frame.load_ms = MillisecondsSince(start);
           sequence = frames_taken++;
         }
+        const double cpu_start = ThreadCpuMs();
         frame.segmentation = segmenter.Segment(frame.frame.image, FrameName(frame.frame));
+        frame.segmentation_cpu_ms = ThreadCpuMs() - cpu_start;
         const std::lock_guard<std::mutex> lock(order_mutex);
         finished.emplace(sequence, std::move(frame));
         for (auto next = finished.find(next_to_hand_on); next != finished.end();
@@ -198,11 +204,21 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
     if (on_frame) on_frame(record);
   });
   const Clock::time_point start = Clock::now();
-  result.interrupted = run_options.threaded
-                           ? RunThreaded(source, segmenters, pipeline, run_options, stop)
-                           : RunSequentially(source, *segmenters.front(), pipeline, stop);
+  const double cpu_start = ProcessCpuMs();
+  // Without segmentation there is nothing to schedule or carry.
+  const bool carried = options.segmentation_schedule.mode == SegmentationScheduleMode::kKeyframes &&
+                       dynamic_cast<const NoSegmenter*>(segmenters.front()) == nullptr;
+  if (carried) {
+    result.interrupted =
+        RunWithCarriedMasks(source, segmenters, pipeline, options, run_options, stop);
+  } else {
+    result.interrupted = run_options.threaded
+                             ? RunThreaded(source, segmenters, pipeline, run_options, stop)
+                             : RunSequentially(source, *segmenters.front(), pipeline, stop);
+  }
   pipeline.Finish();
   result.summary.wall_s = MillisecondsSince(start) / 1000.0;
+  result.summary.cpu_s = (ProcessCpuMs() - cpu_start) / 1000.0;
   return result;
 }
 

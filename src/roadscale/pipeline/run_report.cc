@@ -149,6 +149,16 @@ std::vector<FrameSeries> RunFrameSeries(const RunReportData& data) {
                     per_frame([](const FrameRecord& r) { return r.motion_ms; })});
   series.push_back({"ms_scale", FrameSeriesKind::kMilliseconds,
                     per_frame([](const FrameRecord& r) { return r.scale_ms; })});
+  // CPU time of each thread's work on the frame: on a shared machine the wall times above
+  // include the waits for a core.
+  series.push_back({"cpu_ms_segmentation", FrameSeriesKind::kMilliseconds,
+                    per_frame([](const FrameRecord& r) { return r.segmentation_cpu_ms; })});
+  series.push_back({"cpu_ms_frontend", FrameSeriesKind::kMilliseconds,
+                    per_frame([](const FrameRecord& r) { return r.frontend_cpu_ms; })});
+  series.push_back({"cpu_ms_scale_and_pose", FrameSeriesKind::kMilliseconds,
+                    per_frame([](const FrameRecord& r) { return r.scale_cpu_ms; })});
+  series.push_back({"segmented", FrameSeriesKind::kOther,
+                    per_frame([](const FrameRecord& r) { return r.segmented ? 1.0 : 0.0; })});
   if (keyframe_mode) {
     // NaN in the frames that are no keyframes: the timing table then gives the adjustment's
     // time per keyframe.

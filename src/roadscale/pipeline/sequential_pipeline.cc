@@ -13,6 +13,7 @@
 #include "roadscale/io/pose_row_check.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/run_pipeline.h"
+#include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/line_file.h"
 
@@ -58,6 +59,7 @@ void PipelineOptions::Check() const {
   frontend.Check();
   mapping.Check();
   road_selection.Check();
+  segmentation_schedule.Check();
   CheckOption(max_frames_before_first_scale >= 0, "scale.max_frames_before_first_scale",
               "must be >= 0 (0: never wait for the first scale)");
 }
@@ -66,8 +68,7 @@ std::string FrameRecordCsvHeader() {
   return "index,timestamp,motion_status,pose_update,tracks,correspondences,inliers,detected,"
          "dropped_dynamic,road_mask_px,inlier_ratio,flow_px,parallax_px,scale_valid,"
          "step_length_m,scale_status,status,load_ms,segmentation_ms,tracking_ms,detection_ms,"
-         "motion_ms,"
-         "scale_ms,total_ms";
+         "motion_ms,scale_ms,total_ms,segmented,segmentation_cpu_ms,frontend_cpu_ms,scale_cpu_ms";
 }
 
 std::string FormatFrameRecordCsv(const FrameRecord& r) {
@@ -80,7 +81,8 @@ std::string FormatFrameRecordCsv(const FrameRecord& r) {
       << (r.scale_valid ? 1 : 0) << ',' << std::setprecision(9) << r.step_length_m << ','
       << std::setprecision(6) << '"' << r.scale_status << '"' << ',' << r.status << ',' << r.load_ms
       << ',' << r.segmentation_ms << ',' << r.tracking_ms << ',' << r.detection_ms << ','
-      << r.motion_ms << ',' << r.scale_ms << ',' << r.total_ms;
+      << r.motion_ms << ',' << r.scale_ms << ',' << r.total_ms << ',' << (r.segmented ? 1 : 0)
+      << ',' << r.segmentation_cpu_ms << ',' << r.frontend_cpu_ms << ',' << r.scale_cpu_ms;
   return out.str();
 }
 
@@ -117,24 +119,36 @@ std::string SequentialPipeline::DiagnosticsCsvHeader() const {
 }
 
 TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
-  const Clock::time_point start = Clock::now();
-  const Frame& frame = input.frame;
   const SegmentationResult& segmentation = input.segmentation;
+  TrackedFrame tracked = Track(input, [&](const std::vector<Correspondence>&) {
+    return FrontendMasks{segmentation.static_mask, segmentation.dynamic_mask};
+  });
+  FrameRecord& record = tracked.record;
+  record.segmentation_ms = segmentation.milliseconds;
+  record.segmentation_cpu_ms = input.segmentation_cpu_ms;
+  record.segmented = segmentation.fresh && segmentation.HasLabels();
+  record.total_ms += segmentation.milliseconds;
+  if (!segmentation.road_mask.empty()) {
+    record.road_mask_px = cv::countNonZero(segmentation.road_mask);
+    tracked.road_mask = segmentation.road_mask;
+  }
+  return tracked;
+}
+
+TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input,
+                                       const FrontendMaskProvider& masks) {
+  const Clock::time_point start = Clock::now();
+  const double cpu_start = ThreadCpuMs();
+  const Frame& frame = input.frame;
   TrackedFrame tracked;
   FrameRecord& record = tracked.record;
   record.index = frame.index;
   record.timestamp = frame.timestamp;
   record.load_ms = input.load_ms;
-  record.segmentation_ms = segmentation.milliseconds;
-  if (!segmentation.road_mask.empty()) {
-    record.road_mask_px = cv::countNonZero(segmentation.road_mask);
-    tracked.road_mask = segmentation.road_mask;
-  }
 
   cv::Mat grey = frame.image;
   if (grey.channels() == 3) cv::cvtColor(frame.image, grey, cv::COLOR_BGR2GRAY);
-  tracked.frontend = frontend_.ProcessFrame(static_cast<int>(frame.index), grey,
-                                            segmentation.static_mask, segmentation.dynamic_mask);
+  tracked.frontend = frontend_.ProcessFrame(static_cast<int>(frame.index), grey, masks);
   const FrontendFrame& result = tracked.frontend;
   record.motion_status = result.motion.status;
   record.num_tracks = result.num_tracks;
@@ -148,12 +162,14 @@ TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
   record.tracking_ms = result.tracker.pyramid_ms + result.tracker.tracking_ms;
   record.detection_ms = result.tracker.detection_ms;
   record.motion_ms = result.motion_ms;
-  record.total_ms = MillisecondsSince(start) + input.load_ms + segmentation.milliseconds;
+  record.total_ms = MillisecondsSince(start) + input.load_ms;
+  record.frontend_cpu_ms = ThreadCpuMs() - cpu_start;
   return tracked;
 }
 
 FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   const Clock::time_point start = Clock::now();
+  const double cpu_start = ThreadCpuMs();
   FrameRecord& record = tracked.record;
   const FrontendFrame& result = tracked.frontend;
 
@@ -165,6 +181,7 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
     FrameRecord& waiting = records_waiting_for_backend_.back();
     waiting.scale_ms = MillisecondsSince(backend_start);
     waiting.total_ms += MillisecondsSince(start);
+    waiting.scale_cpu_ms = ThreadCpuMs() - cpu_start;
     for (const MappedFrame& mapped : finished) WriteMappedFrame(mapped);
     record.status = "waiting";
     return record;
@@ -193,6 +210,7 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
       !integrator_.has_scale() && !stopped_waiting_ && max_waiting_frames_ > 0) {
     record.status = "unscaled";
     record.total_ms += MillisecondsSince(start);
+    record.scale_cpu_ms = ThreadCpuMs() - cpu_start;
     waiting_.push_back({record, result.motion});
     if (static_cast<int>(waiting_.size()) >= max_waiting_frames_) {
       WriteWaitingFrames(0.0, 0.0);
@@ -202,6 +220,7 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   }
   if (!waiting_.empty()) WriteWaitingFrames(scale.step_length_m, result.motion.parallax_px);
   record.total_ms += MillisecondsSince(start);
+  record.scale_cpu_ms = ThreadCpuMs() - cpu_start;
   ApplyAndWrite(record, result.motion, scale, false);
   return record;
 }
@@ -329,6 +348,10 @@ void RunSummary::Add(const FrameRecord& record) {
   update_mean(&mean_motion_ms, record.motion_ms);
   update_mean(&mean_scale_ms, record.scale_ms);
   update_mean(&mean_total_ms, record.total_ms);
+  update_mean(&mean_segmentation_cpu_ms, record.segmentation_cpu_ms);
+  update_mean(&mean_frontend_cpu_ms, record.frontend_cpu_ms);
+  update_mean(&mean_scale_cpu_ms, record.scale_cpu_ms);
+  if (record.segmented) ++segmented_frames;
   ++frames;
   switch (record.pose_update) {
     case PoseUpdate::kMotion:
@@ -365,6 +388,14 @@ std::string RunSummary::Format() const {
       << ", tracking " << mean_tracking_ms << ", detection " << mean_detection_ms << ", motion "
       << mean_motion_ms << ", scale " << mean_scale_ms << ", total " << mean_total_ms;
   out << '\n';
+  if (frames > 0) {
+    out << "Segmented: " << segmented_frames << " of " << frames << " frames ("
+        << 100.0 * static_cast<double>(segmented_frames) / static_cast<double>(frames)
+        << " %); CPU ms per frame: segmentation " << mean_segmentation_cpu_ms << ", frontend "
+        << mean_frontend_cpu_ms << ", scale and pose " << mean_scale_cpu_ms;
+    if (cpu_s > 0.0) out << ", whole process " << 1000.0 * cpu_s / static_cast<double>(frames);
+    out << '\n';
+  }
   if (keyframes > 0) {
     std::vector<double> sorted = bundle_adjustment_ms;
     std::sort(sorted.begin(), sorted.end());

@@ -13,6 +13,7 @@
 #include "roadscale/mapping/keyframe_backend.h"
 #include "roadscale/pipeline/pose_integrator.h"
 #include "roadscale/pipeline/scale_source.h"
+#include "roadscale/pipeline/segmentation_schedule.h"
 #include "roadscale/segmentation/segmentation_result.h"
 
 namespace roadscale {
@@ -34,6 +35,8 @@ struct PipelineOptions {
   // keyframe interval leaves the bundle-adjusted window (MappingOptions::window_size).
   MappingOptions mapping;
   ScaleEstimatorOptions road_selection;
+  // Which frames a segmenter runs on (RunPipeline; a run without segmentation ignores it).
+  SegmentationScheduleOptions segmentation_schedule;
 
   // Throws Error naming the first invalid option.
   void Check() const;
@@ -76,6 +79,14 @@ struct FrameRecord {
   // overlap, so the run's frame rate is not 1000 / total_ms.
   double total_ms = 0.0;
 
+  // Whether the segmenter ran on this frame (its masks are fresh, not reused or carried), and
+  // the CPU time of each thread's work on the frame (the segmenter's, the frontend's, and the
+  // scale and pose stage's): on a shared machine wall times include the waits for a core.
+  bool segmented = false;
+  double segmentation_cpu_ms = 0.0;
+  double frontend_cpu_ms = 0.0;
+  double scale_cpu_ms = 0.0;
+
   // Keyframe mode: the frame became a keyframe, and the bundle adjustment it started took
   // this long (also counted in scale_ms, the back end's time for the frame).
   bool keyframe = false;
@@ -92,6 +103,7 @@ struct SegmentedFrame {
   Frame frame;
   SegmentationResult segmentation;
   double load_ms = 0.0;
+  double segmentation_cpu_ms = 0.0;
 };
 
 // One frame as the frontend stage hands it on.
@@ -119,6 +131,10 @@ class SequentialPipeline {
 
   // The frontend stage. Throws Error on an image or mask of the wrong size.
   TrackedFrame Track(const SegmentedFrame& frame);
+  // The same with the frontend's masks given after KLT (carried from an earlier segmented
+  // frame) instead of `frame.segmentation`'s; the caller fills in the road mask and the
+  // record's segmentation fields.
+  TrackedFrame Track(const SegmentedFrame& frame, const FrontendMaskProvider& masks);
 
   // The scale and pose stage: appends the frame's pose rows and record, flushed, so that a
   // run stopped at frame k leaves the rows of frames before k intact. Frames before the first
@@ -198,6 +214,7 @@ struct RunSummary {
   size_t detection_frames = 0;  // frames with a re-detection
   size_t scaled_frames = 0;     // frames whose step length came from the scale source
   size_t keyframes = 0;
+  size_t segmented_frames = 0;               // frames the segmenter ran on
   std::vector<double> bundle_adjustment_ms;  // one per keyframe
   double mean_load_ms = 0.0;
   double mean_segmentation_ms = 0.0;
@@ -206,6 +223,11 @@ struct RunSummary {
   double mean_motion_ms = 0.0;
   double mean_scale_ms = 0.0;
   double mean_total_ms = 0.0;
+  double mean_segmentation_cpu_ms = 0.0;  // over all frames
+  double mean_frontend_cpu_ms = 0.0;
+  double mean_scale_cpu_ms = 0.0;
+  // CPU seconds of the whole process during the run (0 when not measured).
+  double cpu_s = 0.0;
   // Wall-clock seconds of the whole run (0 when not measured).
   double wall_s = 0.0;
 

@@ -261,6 +261,7 @@ TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) 
   const std::string labels = source_options.input + "/semantic";
 
   PipelineOptions options;
+  options.segmentation_schedule.mode = SegmentationScheduleMode::kEveryFrame;
   const auto run = [&](int threads, int failing_frame, const std::string& out) {
     const auto source = OpenFrameSource(source_options);
     std::vector<std::unique_ptr<UnevenSegmenter>> owned;
@@ -286,6 +287,7 @@ TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) 
   // The frame-to-frame host writes each frame once it is processed: a failed run's rows are
   // the complete run's first rows.
   options = FrameToFrame();
+  options.segmentation_schedule.mode = SegmentationScheduleMode::kEveryFrame;
   run(1, -1, dir.File("one"));
   run(3, -1, dir.File("three"));
   const std::string one = FileText(dir.File("one") + "/poses_kitti.txt");
@@ -299,6 +301,50 @@ TEST(SequentialPipelineSynthetic, SeveralSegmentationThreadsWriteWhatOneWrites) 
   const std::string failed = FileText(dir.File("failed") + "/poses_kitti.txt");
   ASSERT_EQ(std::count(failed.begin(), failed.end(), '\n'), 9);
   EXPECT_EQ(failed, one.substr(0, failed.size()));
+}
+
+// Segmenting keyframes only: the network's results arrive at thread-dependent times, the
+// frontend and the scale stage wait for them at fixed frames, so the threaded run (with one
+// or three segmenter threads) writes what the sequential run writes, byte for byte.
+TEST(SequentialPipelineSynthetic, KeyframeSegmentationWritesTheSameWithAndWithoutThreads) {
+  constexpr int kFrames = 24;
+  testing::TempDir dir;
+  const FrameSourceOptions source_options = RenderUrbanStreet(kFrames, dir);
+  const std::string labels = source_options.input + "/semantic";
+  for (const MappingOptions::Mode mode :
+       {MappingOptions::Mode::kKeyframe, MappingOptions::Mode::kFrameToFrame}) {
+    PipelineOptions options;
+    options.mapping.mode = mode;
+    ASSERT_EQ(options.segmentation_schedule.mode, SegmentationScheduleMode::kKeyframes);
+    const auto run = [&](int threads, bool threaded, const std::string& out) {
+      const auto source = OpenFrameSource(source_options);
+      std::vector<std::unique_ptr<UnevenSegmenter>> owned;
+      std::vector<Segmenter*> segmenters;
+      for (int i = 0; i < threads; ++i) {
+        owned.push_back(std::make_unique<UnevenSegmenter>(labels, -1));
+        segmenters.push_back(owned.back().get());
+      }
+      RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
+      RunPipelineOptions run_options;
+      run_options.threaded = threaded;
+      return RunPipeline(*source, segmenters, road, options, out, run_options);
+    };
+    const std::string name = MappingModeName(mode);
+    const RunSummary sequential = run(1, false, dir.File(name + "_sequential")).summary;
+    run(1, true, dir.File(name + "_one"));
+    run(3, true, dir.File(name + "_three"));
+    // Some frames, not all, were segmented.
+    EXPECT_GE(sequential.segmented_frames, 2u) << name;
+    EXPECT_LT(sequential.segmented_frames, static_cast<size_t>(kFrames)) << name;
+    const std::string poses = FileText(dir.File(name + "_sequential") + "/poses_kitti.txt");
+    ASSERT_EQ(std::count(poses.begin(), poses.end(), '\n'), kFrames) << name;
+    for (const std::string& threaded : {name + "_one", name + "_three"}) {
+      EXPECT_EQ(FileText(dir.File(threaded) + "/poses_kitti.txt"), poses) << threaded;
+      EXPECT_EQ(FileText(dir.File(threaded) + "/poses_tum.txt"),
+                FileText(dir.File(name + "_sequential") + "/poses_tum.txt"))
+          << threaded;
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,189 @@
+#include "roadscale/pipeline/carried_segmentation_run.h"
+
+#include <chrono>
+#include <exception>
+#include <optional>
+#include <thread>
+
+#include <opencv2/core.hpp>
+
+#include "roadscale/pipeline/bounded_queue.h"
+#include "roadscale/pipeline/frontend_mask_carrier.h"
+#include "roadscale/pipeline/segmentation_schedule.h"
+#include "roadscale/pipeline/segmentation_service.h"
+#include "roadscale/segmentation/mask_carrying.h"
+
+namespace roadscale {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MillisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A tracked frame with what the scale stage needs to complete its road mask.
+struct CarriedFrame {
+  TrackedFrame tracked;
+  bool segmented = false;
+  Eigen::Matrix3d road_step = Eigen::Matrix3d::Identity();  // cur_from_prev of the road
+};
+
+// The frontend stage: tracks with carried masks, then asks the schedule whether the network
+// segments the frame.
+class CarriedFrontend {
+ public:
+  CarriedFrontend(SequentialPipeline& pipeline, SegmentationService& service,
+                  const PipelineOptions& options, const PinholeCamera& camera)
+      : pipeline_(pipeline),
+        service_(service),
+        carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames),
+        schedule_(camera, options.segmentation_schedule.keyframes) {}
+
+  CarriedFrame Track(const SegmentedFrame& input) {
+    const int index = static_cast<int>(input.frame.index);
+    const bool first = !started_;
+    started_ = true;
+    if (first) service_.Submit(index, input.frame.image, FrameName(input.frame));
+    const auto take = [&](int frame_index) { return service_.Take(frame_index).result; };
+    CarriedFrame out;
+    out.tracked = pipeline_.Track(input, [&](const std::vector<Correspondence>& correspondences) {
+      return carrier_.Masks(index, correspondences, take);
+    });
+    out.road_step = carrier_.last_step();
+    out.segmented = schedule_.Decide(out.tracked.frontend, carrier_.carry_failed());
+    if (out.segmented && !first) {
+      service_.Submit(index, input.frame.image, FrameName(input.frame));
+      carrier_.AddSegmented(index);
+    }
+    return out;
+  }
+
+ private:
+  SequentialPipeline& pipeline_;
+  SegmentationService& service_;
+  FrontendMaskCarrier carrier_;
+  SegmentationSchedule schedule_;
+  bool started_ = false;
+};
+
+// The scale stage's road mask of each frame: a segmented frame's own, else the last segmented
+// frame's carried through the road homographies since.
+class RoadMaskCompleter {
+ public:
+  explicit RoadMaskCompleter(SegmentationService& service) : service_(service) {}
+
+  TrackedFrame Complete(CarriedFrame carried) {
+    TrackedFrame& tracked = carried.tracked;
+    FrameRecord& record = tracked.record;
+    if (carried.segmented) {
+      const ServedSegmentation served = service_.Take(static_cast<int>(record.index));
+      record.segmented = served.result.HasLabels();
+      record.segmentation_ms = served.result.milliseconds;
+      record.segmentation_cpu_ms = served.cpu_ms;
+      record.total_ms += served.result.milliseconds;
+      road_ = served.result.road_mask;
+      cur_from_road_.setIdentity();
+      tracked.road_mask = road_;
+    } else {
+      cur_from_road_ = carried.road_step * cur_from_road_;
+      tracked.road_mask = CarryRoadMask(road_, cur_from_road_);
+    }
+    if (!tracked.road_mask.empty()) record.road_mask_px = cv::countNonZero(tracked.road_mask);
+    return std::move(tracked);
+  }
+
+ private:
+  SegmentationService& service_;
+  cv::Mat road_;
+  Eigen::Matrix3d cur_from_road_ = Eigen::Matrix3d::Identity();
+};
+
+bool LoadFrame(FrameSource& source, SegmentedFrame* out) {
+  const Clock::time_point start = Clock::now();
+  if (!source.Next(&out->frame)) return false;
+  out->load_ms = MillisecondsSince(start);
+  return true;
+}
+
+bool RunSequentially(FrameSource& source, CarriedFrontend& frontend, RoadMaskCompleter& roads,
+                     SequentialPipeline& pipeline, const std::atomic<bool>* stop) {
+  SegmentedFrame frame;
+  while (true) {
+    if (stop != nullptr && stop->load()) return true;
+    if (!LoadFrame(source, &frame)) return false;
+    pipeline.Integrate(roads.Complete(frontend.Track(frame)));
+  }
+}
+
+bool RunThreaded(FrameSource& source, CarriedFrontend& frontend, RoadMaskCompleter& roads,
+                 SequentialPipeline& pipeline, SegmentationService& service,
+                 const PipelineOptions& options, const RunPipelineOptions& run_options,
+                 const std::atomic<bool>* stop) {
+  BoundedQueue<SegmentedFrame> loaded(run_options.queue_capacity);
+  // Room for the frames the frontend runs ahead while the scale stage waits for a network.
+  BoundedQueue<CarriedFrame> tracked(run_options.queue_capacity +
+                                     options.segmentation_schedule.latency_frames);
+  std::exception_ptr load_error, frontend_error, integration_error;
+  std::atomic<bool> interrupted{false};
+
+  std::thread load_thread([&] {
+    try {
+      while (true) {
+        if (stop != nullptr && stop->load()) {
+          interrupted = true;
+          break;
+        }
+        SegmentedFrame frame;
+        if (!LoadFrame(source, &frame) || !loaded.Push(std::move(frame))) break;
+      }
+    } catch (...) {
+      load_error = std::current_exception();
+    }
+    loaded.Close();
+  });
+  std::thread frontend_thread([&] {
+    try {
+      while (std::optional<SegmentedFrame> frame = loaded.Pop()) {
+        if (!tracked.Push(frontend.Track(*frame))) break;
+      }
+    } catch (...) {
+      frontend_error = std::current_exception();
+      loaded.Cancel();
+    }
+    tracked.Close();
+  });
+
+  try {
+    while (std::optional<CarriedFrame> frame = tracked.Pop()) {
+      pipeline.Integrate(roads.Complete(std::move(*frame)));
+    }
+  } catch (...) {
+    integration_error = std::current_exception();
+    service.Cancel();
+    tracked.Cancel();
+    loaded.Cancel();
+  }
+  frontend_thread.join();
+  load_thread.join();
+  // The latest stage's error first: it stopped the run at the earliest frame.
+  if (integration_error) std::rethrow_exception(integration_error);
+  if (frontend_error) std::rethrow_exception(frontend_error);
+  if (load_error) std::rethrow_exception(load_error);
+  return interrupted.load();
+}
+
+}  // namespace
+
+bool RunWithCarriedMasks(FrameSource& source, const std::vector<Segmenter*>& segmenters,
+                         SequentialPipeline& pipeline, const PipelineOptions& options,
+                         const RunPipelineOptions& run_options, const std::atomic<bool>* stop) {
+  SegmentationService service(segmenters, run_options.threaded);
+  CarriedFrontend frontend(pipeline, service, options, source.camera().camera);
+  RoadMaskCompleter roads(service);
+  return run_options.threaded
+             ? RunThreaded(source, frontend, roads, pipeline, service, options, run_options, stop)
+             : RunSequentially(source, frontend, roads, pipeline, stop);
+}
+
+}  // namespace roadscale

@@ -1,0 +1,73 @@
+#include "roadscale/pipeline/frontend_mask_carrier.h"
+
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+cv::Mat StaticMaskOf(const cv::Mat& dynamic_mask) {
+  if (dynamic_mask.empty()) return cv::Mat();
+  cv::Mat out;
+  cv::bitwise_not(dynamic_mask, out);
+  return out;
+}
+
+}  // namespace
+
+FrontendMaskCarrier::FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames)
+    : options_(options), latency_frames_(latency_frames) {
+  options_.Check();
+  CheckOption(latency_frames_ >= 1, "segmentation.latency_frames", "must be >= 1");
+}
+
+FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
+                                         const std::vector<Correspondence>& correspondences,
+                                         const TakeFresh& take_fresh) {
+  if (anchor_frame_ < 0) {
+    // The first frame waits for its own masks: nothing to carry them from.
+    anchor_ = take_fresh(frame_index);
+    anchor_frame_ = frame_index;
+    road_ = anchor_.road_mask;
+    return {anchor_.static_mask, anchor_.dynamic_mask};
+  }
+
+  std::vector<Eigen::Vector2d> prev, cur;
+  prev.reserve(correspondences.size());
+  cur.reserve(correspondences.size());
+  for (const Correspondence& c : correspondences) {
+    prev.push_back(c.prev);
+    cur.push_back(c.cur);
+  }
+  const std::optional<Eigen::Matrix3d> step = FitRoadHomography(prev, cur, road_, options_);
+  carry_failed_ = !step.has_value();
+  // Without a measurement the road is taken to move as in the frame before.
+  if (step) last_step_ = *step;
+  steps_.emplace_back(frame_index, last_step_);
+
+  int due = -1;
+  while (!pending_.empty() && pending_.front() + latency_frames_ <= frame_index) {
+    if (due >= 0) take_fresh(due);  // superseded by a newer due frame: read and dropped
+    due = pending_.front();
+    pending_.pop_front();
+  }
+  if (due >= 0) {
+    anchor_ = take_fresh(due);
+    anchor_frame_ = due;
+    cur_from_anchor_.setIdentity();
+    for (const auto& [frame, cur_from_prev] : steps_) {
+      if (frame > due) cur_from_anchor_ = cur_from_prev * cur_from_anchor_;
+    }
+  } else {
+    cur_from_anchor_ = last_step_ * cur_from_anchor_;
+  }
+  // Keep the steps a pending frame will need when it falls due.
+  const int oldest_needed = pending_.empty() ? frame_index : pending_.front();
+  while (!steps_.empty() && steps_.front().first <= oldest_needed) steps_.pop_front();
+
+  road_ = CarryRoadMask(anchor_.road_mask, cur_from_anchor_);
+  const cv::Mat dynamic = CarryDynamicMask(anchor_.dynamic_mask, cur_from_anchor_,
+                                           frame_index - anchor_frame_, options_);
+  return {StaticMaskOf(dynamic), dynamic};
+}
+
+}  // namespace roadscale

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <deque>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "roadscale/frontend/mono_frontend.h"
+#include "roadscale/segmentation/mask_carrying.h"
+#include "roadscale/segmentation/segmentation_result.h"
+
+#include <Eigen/Core>
+
+namespace roadscale {
+
+// The frontend's masks when only some frames are segmented: each frame's moving-object mask
+// (and the road mask that picks the road tracks) carried from the newest segmented frame
+// whose result is due, `latency_frames` after it, through the road homographies measured
+// frame by frame from the tracks. Frames must come in order.
+class FrontendMaskCarrier {
+ public:
+  using TakeFresh = std::function<SegmentationResult(int frame_index)>;
+
+  FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames);
+
+  // The masks of `frame_index` once its tracks are followed into it (a FrontendMaskProvider's
+  // work). `take_fresh` waits for a segmented frame's result: the first frame's, and each
+  // segmented frame's when it falls due.
+  FrontendMasks Masks(int frame_index, const std::vector<Correspondence>& correspondences,
+                      const TakeFresh& take_fresh);
+
+  // The schedule picked `frame_index` (the frame just tracked) for the network.
+  void AddSegmented(int frame_index) { pending_.push_back(frame_index); }
+
+  // The last frame's road homography cur_from_prev (the previous one's when it could not be
+  // measured, identity in the first frame), and whether it could not.
+  const Eigen::Matrix3d& last_step() const { return last_step_; }
+  bool carry_failed() const { return carry_failed_; }
+
+ private:
+  MaskCarryOptions options_;
+  int latency_frames_;
+  std::deque<int> pending_;  // segmented frames whose results are not yet due
+  SegmentationResult anchor_;
+  int anchor_frame_ = -1;
+  Eigen::Matrix3d cur_from_anchor_ = Eigen::Matrix3d::Identity();
+  // (frame, its road homography from the frame before), back to the oldest pending frame.
+  std::deque<std::pair<int, Eigen::Matrix3d>> steps_;
+  cv::Mat road_;  // this carrier's road mask of the last frame
+  Eigen::Matrix3d last_step_ = Eigen::Matrix3d::Identity();
+  bool carry_failed_ = false;
+};
+
+}  // namespace roadscale

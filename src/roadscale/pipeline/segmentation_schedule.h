@@ -1,0 +1,60 @@
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "roadscale/frontend/mono_frontend.h"
+#include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/mapping/keyframe_selector.h"
+#include "roadscale/segmentation/mask_carrying.h"
+
+namespace roadscale {
+
+// Which frames the network sees. every_frame: all (the paper); keyframes: the frames the
+// keyframe rule picks from the frontend's tracks, the others get masks carried from the last
+// segmented frame (docs/benchmarks.md, "Segmenting keyframes only").
+enum class SegmentationScheduleMode { kEveryFrame, kKeyframes };
+// "every_frame" | "keyframes"; throws Error naming the accepted values otherwise.
+SegmentationScheduleMode ParseSegmentationScheduleMode(const std::string& name);
+std::string SegmentationScheduleModeName(SegmentationScheduleMode mode);
+
+struct SegmentationScheduleOptions {
+  SegmentationScheduleMode mode = SegmentationScheduleMode::kKeyframes;
+  // keyframes: the keyframe rule (KeyframeSelectorOptions) applied to the frontend's tracks
+  // and rotations, in either mapping mode, with its own thresholds: a frame is segmented at
+  // 30 px median parallax since the last segmented one (rotation removed), or when fewer than
+  // 30 % of its tracks are still seen, or after 30 frames. The back end's keyframe thresholds
+  // (10 px, 50 %) would segment 62 % of KITTI 00's frames; these segment 23 % at the same
+  // accuracy (docs/benchmarks.md, "Segmenting keyframes only").
+  KeyframeSelectorOptions keyframes{30.0, 0.3, 30};
+  // A segmented frame's masks reach the frontend this many frames later (the frames between
+  // use the older masks, carried): the network runs beside the frontend instead of holding it
+  // up. Fixed, so that the output never depends on thread timing.
+  int latency_frames = 3;
+  MaskCarryOptions carry;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+// Decides after the frontend has processed a frame whether the network segments it: the first
+// frame, then each frame the keyframe rule picks relative to the last segmented one, and each
+// frame whose road could not be carried. Frames must come in order.
+class SegmentationSchedule {
+ public:
+  SegmentationSchedule(const PinholeCamera& camera, const KeyframeSelectorOptions& options);
+
+  // `carry_failed`: the road's motion into this frame could not be measured.
+  bool Decide(const FrontendFrame& frame, bool carry_failed);
+
+ private:
+  PinholeCamera camera_;
+  KeyframeSelectorOptions options_;
+  bool started_ = false;
+  int last_frame_ = 0;
+  std::map<int64_t, Eigen::Vector2d> last_observations_;
+  // The rotation from the last segmented frame to the current one (the frontend's, chained).
+  Eigen::Matrix3d cur_from_last_ = Eigen::Matrix3d::Identity();
+};
+
+}  // namespace roadscale

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace roadscale {
+
+// Masks of a segmented frame carried to later frames that the network does not see.
+struct MaskCarryOptions {
+  // The road's homography between two frames is fitted (RANSAC) to the tracks that start on
+  // the earlier frame's road mask; fewer of them, or fewer inliers, than this: no fit.
+  int road_min_tracks = 12;
+  // RANSAC inlier threshold in pixels: KLT's tracks are accurate to a few tenths of a pixel,
+  // the road's unevenness and the mask's edge add a little more.
+  double road_ransac_threshold_px = 2.0;
+  // The moving-object mask grows by this many pixels per frame it is carried: what a car's
+  // own motion can move its outline that the road's motion at its wheels does not explain.
+  double dynamic_growth_px_per_frame = 2.0;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+// The homography cur_from_prev (pixels) of the road plane between two frames, fitted to the
+// track pixels `prev` -> `cur` whose `prev` pixel lies on `prev_road_mask` (non-zero = road);
+// nothing when too few tracks or inliers. The plane-induced homography of the known motion:
+// exact for road pixels.
+std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector2d>& prev,
+                                                 const std::vector<Eigen::Vector2d>& cur,
+                                                 const cv::Mat& prev_road_mask,
+                                                 const MaskCarryOptions& options);
+
+// A road mask moved by the road's homography `cur_from_src` (nearest neighbour; pixels that
+// come from outside the source image are not road).
+cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_src);
+
+// A moving-object mask carried `frames` frames (at half resolution): cut into 16 px wide strips,
+// each blob of a strip moved as the road under its lowest pixel moves (and scaled by the road
+// homography's horizontal magnification there: a car stands upright on the road), then the whole
+// mask grown by dynamic_growth_px_per_frame per frame for the objects' own motion. Pieces whose
+// base the homography cannot map stay in place.
+cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur_from_src,
+                         int frames, const MaskCarryOptions& options);
+
+}  // namespace roadscale
