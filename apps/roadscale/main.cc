@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
       "car camera's motion every frame from the road plane and the known camera height."};
   app.set_version_flag("--version", ROADSCALE_VERSION);
   app.require_subcommand(1);
+  roadscale::cli::RegisterBatchCommand(app);
   roadscale::cli::RegisterDemoCommand(app);
   roadscale::cli::RegisterEvalCommand(app);
   roadscale::cli::RegisterRunCommand(app);
