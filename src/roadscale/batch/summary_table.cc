@@ -51,7 +51,7 @@ void ReadFrameStatuses(const std::string& path, DriveRow* row) {
   row->frames = frames;
   row->held_share = static_cast<double>(held) / frames;
   row->unscaled_share = static_cast<double>(unscaled) / frames;
-  row->scaled_share = 1.0 - *row->held_share - *row->unscaled_share;
+  row->scaled_share = static_cast<double>(frames - held - unscaled) / frames;
 }
 
 double PathLength(const std::string& poses_path) {
