@@ -26,14 +26,19 @@ export PATH="$PATH:/usr/sbin"
 
 work="$(mktemp -d)"
 chmod 755 "$work"  # munged wants its socket's folder readable by every user
-cleanup() {
-  for pid_file in slurmd.pid slurmctld.pid munged.pid; do
-    [[ -f "$work/$pid_file" ]] && kill "$(cat "$work/$pid_file")" 2>/dev/null || true
+daemons=()  # process ids of the daemons this test started
+started() {  # PID_FILE: remembers the daemon's process id (it removes the file on exit)
+  for _ in $(seq 50); do
+    [[ -s "$work/$1" ]] && { daemons+=("$(cat "$work/$1")"); return 0; }
+    sleep 0.1
   done
-  for pid_file in slurmd.pid slurmctld.pid munged.pid; do  # wait until they are gone
-    [[ -f "$work/$pid_file" ]] || continue
+  return 1
+}
+cleanup() {
+  for pid in "${daemons[@]}"; do kill "$pid" 2>/dev/null || true; done
+  for pid in "${daemons[@]}"; do  # wait until they are gone
     for _ in $(seq 50); do
-      kill -0 "$(cat "$work/$pid_file")" 2>/dev/null || break
+      kill -0 "$pid" 2>/dev/null || break
       sleep 0.1
     done
   done
@@ -65,8 +70,8 @@ done
 head -c 1024 /dev/urandom >"$work/munge.key"
 chmod 400 "$work/munge.key"
 munged --force --key-file="$work/munge.key" --socket="$work/munge.socket" \
-  --pid-file="$work/munged.pid" --log-file="$work/munged.log" --seed-file="$work/munged.seed" ||
-  { show_logs; skip "munged did not start"; }
+  --pid-file="$work/munged.pid" --log-file="$work/munged.log" --seed-file="$work/munged.seed" &&
+  started munged.pid || { show_logs; skip "munged did not start"; }
 mkdir -p "$work/state" "$work/spool"
 host="$(hostname -s)"
 cat >"$work/slurm.conf" <<CONF
@@ -95,8 +100,8 @@ NodeName=$host CPUs=2 State=UNKNOWN
 PartitionName=roadscale Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
 export SLURM_CONF="$work/slurm.conf"
-slurmctld -f "$SLURM_CONF" || { show_logs; skip "slurmctld did not start"; }
-slurmd -f "$SLURM_CONF" || { show_logs; skip "slurmd did not start"; }
+slurmctld -f "$SLURM_CONF" && started slurmctld.pid || { show_logs; skip "slurmctld did not start"; }
+slurmd -f "$SLURM_CONF" && started slurmd.pid || { show_logs; skip "slurmd did not start"; }
 for _ in $(seq 100); do
   [[ "$(sinfo -h -o %t 2>/dev/null)" == "idle" ]] && break
   sleep 0.2
