@@ -51,13 +51,13 @@ int main(int argc, char** argv) {
       "car camera's motion every frame from the road plane and the known camera height."};
   app.set_version_flag("--version", ROADSCALE_VERSION);
   app.require_subcommand(1);
-  roadscale::cli::RegisterBatchCommand(app);
   roadscale::cli::RegisterDemoCommand(app);
   roadscale::cli::RegisterEvalCommand(app);
   roadscale::cli::RegisterRunCommand(app);
   roadscale::cli::RegisterRescaleCommand(app);
   roadscale::cli::RegisterSegmentCommand(app);
   roadscale::cli::RegisterSynthCommand(app);
+  roadscale::cli::RegisterBatchCommand(app);
 
   // CLI11 would take an unknown word for a stray argument and say "A subcommand is required".
   if (argc > 1 && argv[1][0] != '-' && !IsSubcommand(app, argv[1])) {
