@@ -1,5 +1,6 @@
 #include "roadscale/batch/manifest.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "roadscale/batch/summary_table.h"
 
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
