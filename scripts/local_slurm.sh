@@ -8,8 +8,10 @@
 #   scripts/local_slurm.sh stop DIR    # stops the daemons it started, by their process ids
 #
 # munged gets its own 1 KiB random key and socket in DIR (the machine's /etc/munge is left
-# alone); slurm.conf: auth/munge, proctrack/linuxproc, task/none, select/cons_tres, SlurmUser
-# root, one node `hostname -s` with CPUs=2 in one partition "roadscale", ports 16817-16818.
+# alone); slurm.conf: auth/munge, proctrack/linuxproc, task/none, select/cons_tres with CPUs
+# the only consumable resource (CR_CPU: with memory counted too, every job would take the
+# node's whole memory and the tasks would run one at a time), SlurmUser root, one node
+# `hostname -s` with CPUs=2 in one partition "roadscale", ports 16817-16818.
 # `start` fails with the reason on stderr (and the daemons' last log lines), stopping what it
 # started, when a daemon does not come up.
 set -euo pipefail
@@ -76,6 +78,7 @@ AuthInfo=socket=$dir/munge.socket
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 SelectType=select/cons_tres
+SelectTypeParameters=CR_CPU
 JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
 MpiDefault=none
