@@ -12,14 +12,16 @@ function(roadscale_set_compile_options target)
   endif()
 endfunction()
 
-# roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data])
-# One GoogleTest executable per module; each TEST becomes its own CTest case.
+# roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data] [PREFIX module.])
+# One GoogleTest executable per module; each TEST becomes its own CTest case, its name
+# preceded by PREFIX when given (so that `ctest -R module` selects a module's tests).
 function(roadscale_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "PREFIX" "SOURCES;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE roadscale roadscale_testing GTest::gtest GTest::gtest_main)
   roadscale_set_compile_options(${name})
   gtest_discover_tests(${name}
+    TEST_PREFIX "${ARG_PREFIX}"
     PROPERTIES LABELS "${ARG_LABELS}"
     DISCOVERY_TIMEOUT 60)
 endfunction()

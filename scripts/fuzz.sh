@@ -31,7 +31,7 @@ fi
 
 build=build-fuzz
 targets=(kitti_calib kitti_times trajectory camera_yaml run_config model_yaml scene_yaml
-  png_structure)
+  png_structure batch_manifest)
 # -O1 with line tables only, as OSS-Fuzz builds: enough for the sanitizers' stack traces,
 # and the build (the whole library, instrumented) is the slow part of a short run.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -13,6 +13,7 @@ PACKAGES=(
   libopencv-dev libeigen3-dev libceres-dev libyaml-cpp-dev libcli11-dev
   libspdlog-dev libfmt-dev nlohmann-json3-dev libcairo2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  slurm-wlm munge  # roadscale batch's live Slurm test (tests/batch_slurm_test.sh)
 )
 
 missing_packages() {

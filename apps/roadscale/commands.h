@@ -8,6 +8,9 @@ namespace roadscale::cli {
 // these functions. A subcommand's callback throws roadscale::Error on bad input; main()
 // turns it into one line on stderr and a non-zero exit code.
 
+// `roadscale batch`: many drives as `roadscale run` would run them, resumable, with a summary.
+void RegisterBatchCommand(CLI::App& app);
+
 // `roadscale demo`: renders a synthetic sequence, runs the pipeline, writes the report.
 void RegisterDemoCommand(CLI::App& app);
 

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   roadscale::cli::RegisterRescaleCommand(app);
   roadscale::cli::RegisterSegmentCommand(app);
   roadscale::cli::RegisterSynthCommand(app);
+  roadscale::cli::RegisterBatchCommand(app);
 
   // CLI11 would take an unknown word for a stray argument and say "A subcommand is required".
   if (argc > 1 && argv[1][0] != '-' && !IsSubcommand(app, argv[1])) {

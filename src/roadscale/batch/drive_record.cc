@@ -1,0 +1,105 @@
+#include "roadscale/batch/drive_record.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "roadscale/util/error.h"
+#include "roadscale/util/input_file.h"
+
+namespace roadscale::batch {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+std::string RecordPath(const std::string& drive_dir) {
+  return (fs::path(drive_dir) / kDriveRecordFile).string();
+}
+
+}  // namespace
+
+void WriteDriveRecord(const std::string& drive_dir, const DriveRecord& record) {
+  Json json;
+  json["name"] = record.name;
+  json["fingerprint"] = record.fingerprint;
+  json["arguments"] = record.arguments;
+  json["exit_status"] = record.exit_status;
+  json["error"] = record.error;
+  json["wall_s"] = record.wall_s;
+  json["outputs"] = record.outputs;
+  const std::string path = RecordPath(drive_dir);
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary);
+    file << json.dump(2) << '\n';
+    if (!file.flush()) ThrowFileError(temporary, "cannot write the drive's record");
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) ThrowFileError(path, "cannot write the drive's record (" + error.message() + ")");
+}
+
+std::optional<DriveRecord> ReadDriveRecord(const std::string& drive_dir) {
+  const std::string path = RecordPath(drive_dir);
+  if (!fs::exists(path)) return std::nullopt;
+  try {
+    const Json json = Json::parse(ReadInputFile(path, "drive record"));
+    DriveRecord record;
+    record.name = json.at("name").get<std::string>();
+    record.fingerprint = json.at("fingerprint").get<std::string>();
+    record.arguments = json.at("arguments").get<std::vector<std::string>>();
+    record.exit_status = json.at("exit_status").get<int>();
+    record.error = json.at("error").get<std::string>();
+    record.wall_s = json.at("wall_s").get<double>();
+    record.outputs = json.at("outputs").get<std::vector<std::string>>();
+    return record;
+  } catch (const nlohmann::json::exception& e) {
+    ThrowFileError(path, std::string("not a drive record (") + e.what() +
+                             "); remove it to run the drive again");
+  }
+}
+
+void RemoveDriveRecord(const std::string& drive_dir) {
+  std::error_code error;
+  fs::remove(RecordPath(drive_dir), error);
+  if (error) {
+    ThrowFileError(RecordPath(drive_dir),
+                   "cannot remove the previous drive record (" + error.message() + ")");
+  }
+}
+
+std::vector<std::string> RunOutputsIn(const std::string& drive_dir) {
+  std::vector<std::string> present;
+  for (const char* name : {"poses_kitti.txt", "poses_tum.txt", "frames.csv", "config_used.yaml",
+                           "report.html", "metrics.json", "gt_poses_kitti.txt"}) {
+    if (fs::is_regular_file(fs::path(drive_dir) / name)) present.push_back(name);
+  }
+  return present;
+}
+
+bool IsDriveFinished(const std::string& drive_dir, const std::string& fingerprint) {
+  const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
+  if (!record || record->exit_status != 0 || record->fingerprint != fingerprint) return false;
+  for (const std::string& output : record->outputs) {
+    if (!fs::is_regular_file(fs::path(drive_dir) / output)) return false;
+  }
+  return !record->outputs.empty();
+}
+
+std::string LastErrorLine(const std::string& log_path) {
+  std::ifstream log(log_path);
+  const std::string prefix = "roadscale: ";
+  std::string line;
+  std::string last;
+  while (std::getline(log, line)) {
+    if (line.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = line.substr(prefix.size());
+    if (rest.compare(0, 7, "error: ") == 0) last = rest.substr(7);
+    if (rest.compare(0, 16, "internal error: ") == 0) last = rest;
+  }
+  return last;
+}
+
+}  // namespace roadscale::batch

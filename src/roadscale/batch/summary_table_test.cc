@@ -1,0 +1,143 @@
+#include "roadscale/batch/summary_table.h"
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "roadscale/batch/drive_record.h"
+#include "roadscale/batch/summary_files.h"
+#include "roadscale/testing/temp_dir.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale::batch {
+namespace {
+
+using roadscale::testing::TempDir;
+using roadscale::testing::WriteTextFile;
+using ::testing::HasSubstr;
+
+// KITTI rows of a camera driving `steps` metres straight ahead, 1 m a frame.
+std::string StraightPoses(int frames) {
+  std::string text;
+  for (int i = 0; i < frames; ++i) {
+    text += "1 0 0 0 0 1 0 0 0 0 1 " + std::to_string(i) + "\n";
+  }
+  return text;
+}
+
+// A finished drive folder: 4 frames (ok, held, unscaled, ok), 3 m, 2 s of wall time, and a
+// metrics.json when given.
+void WriteDrive(const TempDir& batch, const std::string& name, const std::string& metrics) {
+  const std::string dir = batch.File(name);
+  WriteTextFile(dir + "/frames.csv",
+                "frame,timestamp,status,tracks\n0,0,first,10\n1,0.1,held,10\n2,0.2,unscaled,"
+                "10\n3,0.3,ok,10\n");
+  WriteTextFile(dir + "/poses_kitti.txt", StraightPoses(4));
+  if (!metrics.empty()) WriteTextFile(dir + "/metrics.json", metrics);
+  DriveRecord record;
+  record.name = name;
+  record.wall_s = 2.0;
+  record.outputs = RunOutputsIn(dir);
+  WriteDriveRecord(dir, record);
+}
+
+std::string Metrics(const std::string& t_err, const std::string& r_err, const std::string& se3,
+                    const std::string& sim3, const std::string& ratio) {
+  return "{\"frames\": 4, \"kitti\": {\"t_err_pct\": " + t_err + ", \"r_err_deg_per_m\": " + r_err +
+         ", \"n_segments\": 3, \"per_length\": []}, \"ate_m\": {\"none\": 1, \"se3\": " + se3 +
+         ", \"sim3\": " + sim3 +
+         ", \"sim3_scale\": 1}, \"rpe\": {\"trans_rmse_m\": 0, "
+         "\"rot_rmse_deg\": 0}, \"length_ratio\": " +
+         ratio + ", \"final_drift_m\": 0, \"final_drift_pct\": 0}";
+}
+
+TEST(SummaryTableTest, RowsCarryEachDrivesMetricsJsonNumbersExactly) {
+  TempDir batch;
+  WriteDrive(batch, "a", Metrics("1.2345678", "0.0061234567", "0.52", "0.31", "0.98765"));
+  WriteDrive(batch, "b", Metrics("2.5", "0.01", "1.25", "null", "1.0123"));
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"a", "b"});
+  ASSERT_EQ(summary.rows.size(), 2U);
+  const DriveRow& a = summary.rows[0];
+  EXPECT_EQ(a.report, "a/report.html");
+  EXPECT_EQ(a.t_err_pct, 1.2345678);
+  EXPECT_EQ(a.r_err_deg_per_m, 0.0061234567);
+  EXPECT_EQ(a.r_err_deg_per_100m, 100.0 * 0.0061234567);
+  EXPECT_EQ(a.ate_se3_m, 0.52);
+  EXPECT_EQ(a.ate_sim3_m, 0.31);
+  EXPECT_EQ(a.length_ratio, 0.98765);
+  EXPECT_EQ(a.frames, 4.0);
+  EXPECT_DOUBLE_EQ(*a.length_m, 3.0);
+  EXPECT_EQ(a.held_share, 0.25);
+  EXPECT_EQ(a.unscaled_share, 0.25);
+  EXPECT_EQ(a.scaled_share, 0.5);
+  EXPECT_EQ(a.frames_per_s, 2.0);
+  EXPECT_FALSE(summary.rows[1].ate_sim3_m);
+
+  ASSERT_TRUE(summary.mean);
+  EXPECT_EQ(summary.mean_over, 2);
+  EXPECT_DOUBLE_EQ(*summary.mean->t_err_pct, (1.2345678 + 2.5) / 2);
+  EXPECT_DOUBLE_EQ(*summary.mean->ate_sim3_m, 0.31);  // over the drives that have it
+
+  // The CSV's digits are metrics.json's.
+  const std::string csv = FormatSummaryCsv(summary);
+  EXPECT_THAT(csv, HasSubstr("name,frames,length_m,t_err_pct,r_err_deg_per_100m,"
+                             "r_err_deg_per_m,ate_se3_m,ate_sim3_m,length_ratio,scaled_share,"
+                             "held_share,unscaled_share,frames_per_s\n"));
+  EXPECT_THAT(csv, HasSubstr("\na,4,3.0,1.2345678,"));
+  EXPECT_THAT(csv, HasSubstr(",0.0061234567,0.52,0.31,0.98765,0.5,0.25,0.25,2.0\n"));
+  EXPECT_THAT(csv, HasSubstr("\nb,4,3.0,2.5,1.0,0.01,1.25,,1.0123,"));
+  const nlohmann::json json = nlohmann::json::parse(FormatSummaryJson(summary));
+  EXPECT_EQ(json["drives"][0]["t_err_pct"].get<double>(), 1.2345678);
+  EXPECT_TRUE(json["drives"][1]["ate_sim3_m"].is_null());
+}
+
+TEST(SummaryTableTest, MeanIsOverDrivesWithGroundTruthOnly) {
+  TempDir batch;
+  WriteDrive(batch, "gt", Metrics("1.0", "0.01", "0.5", "0.4", "1.0"));
+  WriteDrive(batch, "video", "");
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"gt", "video"});
+  ASSERT_EQ(summary.rows.size(), 2U);
+  EXPECT_FALSE(summary.rows[1].ground_truth);
+  EXPECT_FALSE(summary.rows[1].t_err_pct);
+  EXPECT_EQ(summary.mean_over, 1);
+  EXPECT_EQ(summary.mean->t_err_pct, 1.0);
+}
+
+TEST(SummaryTableTest, FailedAndMissingDrivesAreListedAndTheOthersKeepTheirRows) {
+  TempDir batch;
+  WriteDrive(batch, "good", Metrics("1.0", "0.01", "0.5", "0.4", "1.0"));
+  DriveRecord failed;
+  failed.name = "bad";
+  failed.exit_status = 1;
+  failed.error = "cfg.yaml:3: unknown key";
+  std::filesystem::create_directories(batch.path() / "bad");
+  WriteDriveRecord(batch.File("bad"), failed);
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"good", "bad", "never"});
+  ASSERT_EQ(summary.rows.size(), 1U);
+  EXPECT_EQ(summary.rows[0].t_err_pct, 1.0);
+  ASSERT_EQ(summary.unfinished.size(), 2U);
+  EXPECT_EQ(summary.unfinished[0].reason, "failed (exit status 1): cfg.yaml:3: unknown key");
+  EXPECT_EQ(summary.unfinished[1].reason, "not run");
+  const std::string markdown = FormatSummaryMarkdown(summary);
+  EXPECT_THAT(markdown, HasSubstr("| [good](good/report.html) | 4 | 3.0 | 1.00 |"));
+  EXPECT_THAT(markdown, HasSubstr("- bad: failed (exit status 1): cfg.yaml:3: unknown key"));
+  EXPECT_THAT(FormatSummaryHtml(summary), HasSubstr("<a href=\"good/report.html\">good</a>"));
+}
+
+TEST(SummaryTableTest, MalformedFramesFileIsAnErrorNamingIt) {
+  TempDir batch;
+  WriteDrive(batch, "a", "");
+  WriteTextFile(batch.File("a/frames.csv"), "frame,tracks\n0,1\n");
+  try {
+    SummarizeDrives(batch.path().string(), {"a"});
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("frames.csv:1: no status column"));
+  }
+}
+
+}  // namespace
+}  // namespace roadscale::batch
