@@ -23,6 +23,7 @@
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/pipeline/segmentation_schedule.h"
 #include "roadscale/segmentation/cityscapes.h"
+#include "roadscale/segmentation/label_iou.h"
 #include "roadscale/segmentation/mask_carrying.h"
 #include "roadscale/segmentation/onnx_segmenter.h"
 #include "roadscale/segmentation/segmentation_masks.h"
@@ -31,16 +32,6 @@
 
 namespace roadscale {
 namespace {
-
-struct Pooled {
-  double intersection = 0.0;
-  double union_ = 0.0;
-  void Add(const cv::Mat& a, const cv::Mat& b) {
-    intersection += cv::countNonZero(a & b);
-    union_ += cv::countNonZero(a | b);
-  }
-  double Iou() const { return union_ > 0.0 ? intersection / union_ : 0.0; }
-};
 
 struct Missed {
   double missed = 0.0, total = 0.0;
@@ -90,7 +81,7 @@ void Run(int frames, const std::string& size) {
       "  d | road IoU carried | reused | dynamic IoU carried | reused | dynamic missed "
       "carried | reused\n");
   for (const int d : {1, 2, 3, 4}) {
-    Pooled road, road_reused, dynamic, dynamic_reused;
+    PooledMaskIou road, road_reused, dynamic, dynamic_reused;
     Missed missed, missed_reused;
     for (int t = 0; t + d < frames; ++t) {
       Eigen::Matrix3d cur_from_t = Eigen::Matrix3d::Identity();
@@ -129,7 +120,7 @@ void Run(int frames, const std::string& size) {
     schedule_options.min_parallax_px = parallax_px;
     schedule_options.min_tracked_share = tracked_share;
     SegmentationSchedule schedule(camera, schedule_options);
-    Pooled road, dynamic;
+    PooledMaskIou road, dynamic;
     Missed missed;
     int segmented = 0;
     std::vector<int> gaps;

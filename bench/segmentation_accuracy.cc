@@ -87,16 +87,6 @@ void LabelledImageIou() {
   }
 }
 
-struct Pooled {
-  double intersection = 0.0;
-  double union_ = 0.0;
-  void Add(const cv::Mat& a, const cv::Mat& b) {
-    intersection += cv::countNonZero(a & b);
-    union_ += cv::countNonZero(a | b);
-  }
-  double Iou() const { return union_ > 0.0 ? intersection / union_ : 0.0; }
-};
-
 void ReuseCost(const std::string& size, int frames) {
   OnnxSegmenter network(ReadSegmentationModel(ModelYaml(size)), OnnxSegmenter::Options());
   std::vector<SegmentationResult> fresh;
@@ -115,7 +105,7 @@ void ReuseCost(const std::string& size, int frames) {
               frames - 1, milliseconds / frames);
   std::printf("  reused after | road IoU | dynamic IoU | dynamic px missed\n");
   for (const int d : {1, 2, 3, 4}) {
-    Pooled road, dynamic;
+    PooledMaskIou road, dynamic;
     double missed = 0.0, dynamic_pixels = 0.0;
     for (int t = 0; t + d < frames; ++t) {
       const SegmentationResult& old_masks = fresh[t];

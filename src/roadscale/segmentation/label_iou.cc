@@ -32,4 +32,16 @@ double MaskIou(const cv::Mat& a, const cv::Mat& b) {
   return cv::countNonZero(set_a & set_b) / union_count;
 }
 
+void PooledMaskIou::Add(const cv::Mat& a, const cv::Mat& b) {
+  CheckOption(a.size() == b.size(), "masks", "masks must have the same size");
+  const cv::Mat set_a = a != 0;
+  const cv::Mat set_b = b != 0;
+  intersection += cv::countNonZero(set_a & set_b);
+  union_ += cv::countNonZero(set_a | set_b);
+}
+
+double PooledMaskIou::Iou() const {
+  return union_ > 0.0 ? intersection / union_ : std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace roadscale

@@ -23,4 +23,15 @@ struct ClassSetIou {
 // IoU of two binary masks (CV_8U, nonzero = set); NaN when both are empty.
 double MaskIou(const cv::Mat& a, const cv::Mat& b);
 
+// MaskIou pooled over several mask pairs: intersections and unions summed, then divided.
+struct PooledMaskIou {
+  double intersection = 0.0;
+  double union_ = 0.0;
+
+  // Adds one pair of binary masks (CV_8U, nonzero = set) of the same size.
+  void Add(const cv::Mat& a, const cv::Mat& b);
+  // NaN when every pair was empty.
+  double Iou() const;
+};
+
 }  // namespace roadscale

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/util/error.h"
+
 namespace roadscale {
 namespace {
 
@@ -41,6 +43,22 @@ TEST(LabelIou, MaskIou) {
   a.at<uchar>(0, 1) = 255;
   b.at<uchar>(0, 1) = 1;
   EXPECT_DOUBLE_EQ(MaskIou(a, b), 0.5);
+}
+
+TEST(LabelIou, PooledMaskIouSumsBeforeDividing) {
+  PooledMaskIou pooled;
+  EXPECT_TRUE(std::isnan(pooled.Iou()));
+  cv::Mat a = cv::Mat::zeros(4, 4, CV_8U), b = cv::Mat::zeros(4, 4, CV_8U);
+  a(cv::Rect(0, 0, 2, 2)) = 1;  // 4 pixels, all shared: 4 / 4
+  b(cv::Rect(0, 0, 2, 2)) = 255;
+  pooled.Add(a, b);
+  cv::Mat c = cv::Mat::zeros(4, 4, CV_8U), d = cv::Mat::zeros(4, 4, CV_8U);
+  c(cv::Rect(0, 0, 4, 3)) = 1;  // 12 and 4 pixels, 4 shared: 4 / 12
+  d(cv::Rect(0, 0, 4, 1)) = 1;
+  pooled.Add(c, d);
+  // Pooled: 8 / 16, not the mean of the two IoUs (1 and 1/3).
+  EXPECT_DOUBLE_EQ(pooled.Iou(), 0.5);
+  EXPECT_THROW(pooled.Add(a, cv::Mat::zeros(3, 4, CV_8U)), Error);
 }
 
 }  // namespace
