@@ -14,22 +14,9 @@ roadscale="$1"
 mode="${2:-errors}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
-expect_line() {  # FILE REGEX
-  grep -Eq -- "$2" "$1" || fail "no line matching '$2' in: $(cat "$1")"
-}
-expect_failure() {  # REGEX COMMAND...
-  local regex="$1"
-  shift
-  if "$@" >"$work/stdout.txt" 2>"$work/stderr.txt"; then
-    fail "succeeded but should fail: $*"
-  fi
-  [[ "$(wc -l <"$work/stderr.txt")" -eq 1 ]] || fail "not one line on stderr: $(cat "$work/stderr.txt")"
-  expect_line "$work/stderr.txt" "$regex"
-}
+scratch="$work"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 render() {  # FOLDER PRESET FRAMES: a short rendered drive with ground truth and label images
   "$roadscale" synth --preset "$2" --frames "$3" --out "$work/$1" >/dev/null 2>&1 ||
     fail "synth $1 failed"

@@ -11,13 +11,9 @@ shared="${ROADSCALE_SHARED:-$2}"
 mode="${3:-cli}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
-expect_line() {  # FILE REGEX
-  grep -Eq -- "$2" "$1" || fail "no line matching '$2' in: $(cat "$1")"
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 
 if [[ "$mode" == "self" ]]; then
   gt="$shared/kitti/poses/00.txt"

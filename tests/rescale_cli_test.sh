@@ -12,22 +12,9 @@ roadscale="$1"
 mode="${2:-errors}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
-expect_line() {  # FILE REGEX
-  grep -Eq -- "$2" "$1" || fail "no line matching '$2' in: $(cat "$1")"
-}
-expect_failure() {  # REGEX COMMAND...
-  local regex="$1"
-  shift
-  if "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"; then
-    fail "succeeded but should fail: $*"
-  fi
-  [[ "$(wc -l <"$out/stderr.txt")" -eq 1 ]] || fail "not one line on stderr: $(cat "$out/stderr.txt")"
-  expect_line "$out/stderr.txt" "$regex"
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 # The "rescaled" length ratio of a run's evaluation summary must be within 5 % of 1.
 expect_ratio_near_one() {  # LOG
   awk '$1 == "rescaled" { found = 1; if ($2 < 0.95 || $2 > 1.05) exit 1 } END { exit !found }' \

@@ -17,22 +17,9 @@ shared="${ROADSCALE_SHARED:-$2}"
 mode="${3:-errors}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
-expect_line() {  # FILE REGEX
-  grep -Eq -- "$2" "$1" || fail "no line matching '$2' in: $(cat "$1")"
-}
-expect_failure() {  # REGEX COMMAND...
-  local regex="$1"
-  shift
-  if "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"; then
-    fail "succeeded but should fail: $*"
-  fi
-  [[ "$(wc -l <"$out/stderr.txt")" -eq 1 ]] || fail "not one line on stderr: $(cat "$out/stderr.txt")"
-  expect_line "$out/stderr.txt" "$regex"
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 
 sequence="$shared/kitti/sequences/00"
 if [[ "$mode" == "kitti" ]]; then
