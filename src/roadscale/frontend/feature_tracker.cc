@@ -124,6 +124,30 @@ void FeatureTracker::DropOnMask(const cv::Mat& dynamic_mask) {
                     [](const roadscale::Track& track) { return track.length() >= 2; }));
 }
 
+std::vector<int64_t> FeatureTracker::DropOnMaskAt(int frame_index, const cv::Mat& dynamic_mask) {
+  std::vector<int64_t> dropped;
+  if (dynamic_mask.empty()) return dropped;
+  if (dynamic_mask.type() != CV_8UC1 || dynamic_mask.size() != image_.size()) {
+    throw Error("frame " + std::to_string(frame_index) +
+                ": the dynamic mask must be 8-bit single channel and of the image's size");
+  }
+  const auto on_mask = [&](const roadscale::Track& track) {
+    if (frame_index < track.first_frame || frame_index > track.last_frame()) return false;
+    const Eigen::Vector2d& p = track.pixels[static_cast<size_t>(frame_index - track.first_frame)];
+    const int x = std::clamp(static_cast<int>(std::lround(p.x())), 0, dynamic_mask.cols - 1);
+    const int y = std::clamp(static_cast<int>(std::lround(p.y())), 0, dynamic_mask.rows - 1);
+    if (dynamic_mask.at<unsigned char>(y, x) == 0) return false;
+    dropped.push_back(track.id);
+    return true;
+  };
+  tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(), on_mask), tracks_.end());
+  stats_.dropped_dynamic += static_cast<int>(dropped.size());
+  stats_.tracked = static_cast<int>(
+      std::count_if(tracks_.begin(), tracks_.end(),
+                    [](const roadscale::Track& track) { return track.length() >= 2; }));
+  return dropped;
+}
+
 int FeatureTracker::Detect(const cv::Mat& detection_mask, bool force) {
   if (image_.empty()) throw Error("feature detection before the first frame was tracked");
   if (!force && static_cast<int>(tracks_.size()) >= options_.redetect_below) return 0;

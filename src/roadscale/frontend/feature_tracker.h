@@ -71,6 +71,13 @@ class FeatureTracker {
   // wrong type or size.
   void DropOnMask(const cv::Mat& dynamic_mask);
 
+  // Ends the tracks whose pixel in the earlier frame `frame_index` lay on that frame's own
+  // `dynamic_mask`, counting them as dropped_dynamic, and returns their ids: for a mask that
+  // arrives frames late (the network runs beside the tracking). A track born on a car after
+  // the last segmented frame is off the carried mask once the car drives on; its pixel in
+  // the segmented frame tells. Throws Error on a mask of the wrong type or size.
+  std::vector<int64_t> DropOnMaskAt(int frame_index, const cv::Mat& dynamic_mask);
+
   // Starts new tracks in the current frame where `detection_mask` (CV_8UC1, non-zero =
   // allowed; empty = whole image) allows, when fewer than redetect_below tracks are alive
   // (or always with force). Returns the number of new tracks.

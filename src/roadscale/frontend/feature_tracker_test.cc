@@ -92,6 +92,40 @@ TEST(FeatureTracker, DropsTracksOnTheDynamicMaskAndOnRequest) {
   for (const Track& track : tracker.tracks()) EXPECT_NE(track.id, victim);
 }
 
+TEST(FeatureTracker, DropsTracksByTheirPixelInAnEarlierSegmentedFrame) {
+  FeatureTracker tracker({});
+  tracker.Track(0, testing::SyntheticTexture(300, 200), cv::Mat());
+  tracker.Detect(cv::Mat(), true);
+  // The texture moves 30 px to the right in three frames: a track left of x = 100 in frame 0
+  // is right of it by frame 3, where only its frame-0 pixel shows it was on the mask.
+  for (int k = 1; k <= 3; ++k) {
+    tracker.Track(k, testing::SyntheticTexture(300, 200, 10.0 * k, 0.0), cv::Mat());
+  }
+  tracker.Detect(cv::Mat(), true);  // tracks born in frame 3 have no frame-0 pixel
+  cv::Mat frame0_dynamic(200, 300, CV_8UC1, cv::Scalar(0));
+  frame0_dynamic(cv::Rect(0, 0, 100, 200)).setTo(255);
+  int on_mask_in_frame0 = 0;
+  for (const Track& track : tracker.tracks()) {
+    if (track.first_frame == 0 && track.pixels.front().x() < 99.5) ++on_mask_in_frame0;
+  }
+  ASSERT_GT(on_mask_in_frame0, 0);
+  const size_t before = tracker.tracks().size();
+
+  const std::vector<int64_t> dropped = tracker.DropOnMaskAt(0, frame0_dynamic);
+  EXPECT_EQ(static_cast<int>(dropped.size()), on_mask_in_frame0);
+  EXPECT_EQ(tracker.tracks().size(), before - dropped.size());
+  EXPECT_EQ(tracker.stats().dropped_dynamic, static_cast<int>(dropped.size()));
+  bool kept_one_born_later_on_the_mask_area = false;
+  for (const Track& track : tracker.tracks()) {
+    if (track.first_frame == 0) EXPECT_GE(track.pixels.front().x(), 99.5);
+    if (track.first_frame == 3 && track.pixels.back().x() < 99.5) {
+      kept_one_born_later_on_the_mask_area = true;
+    }
+  }
+  EXPECT_TRUE(kept_one_born_later_on_the_mask_area);
+  EXPECT_THROW(tracker.DropOnMaskAt(0, cv::Mat(10, 10, CV_8UC1)), Error);
+}
+
 TEST(FeatureTracker, RejectsFramesOutOfOrderAndBadImages) {
   FeatureTracker tracker({});
   EXPECT_THROW(tracker.Detect(cv::Mat()), Error);

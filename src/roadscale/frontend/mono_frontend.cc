@@ -55,6 +55,10 @@ FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
   };
   const FrontendMasks masks = masks_after_tracking(correspondences());
   tracker_.DropOnMask(masks.dynamic_mask);
+  if (masks.segmented_frame >= 0) {
+    frame.late_dynamic_track_ids =
+        tracker_.DropOnMaskAt(masks.segmented_frame, masks.segmented_dynamic_mask);
+  }
   frame.correspondences = correspondences();
 
   const auto start = std::chrono::steady_clock::now();

@@ -45,6 +45,9 @@ struct FrontendFrame {
   // Every live track's pixel in this frame after outlier removal and re-detection, in
   // increasing id order: what a map sees of the frame (new tracks included).
   std::vector<TrackObservation> observations;
+  // Tracks found on a moving object only in a segmented earlier frame (FrontendMasks::
+  // segmented_frame): their earlier observations were on it too, so a map drops them.
+  std::vector<int64_t> late_dynamic_track_ids;
 };
 
 // The masks a frame's features obey (CV_8UC1 of the image's size; empty = none): where new
@@ -52,6 +55,10 @@ struct FrontendFrame {
 struct FrontendMasks {
   cv::Mat detection_mask;
   cv::Mat dynamic_mask;
+  // A segmented earlier frame whose own moving-object mask arrived with this frame (-1:
+  // none): the tracks that were on it there are dropped too (FeatureTracker::DropOnMaskAt).
+  int segmented_frame = -1;
+  cv::Mat segmented_dynamic_mask = {};
 };
 
 // Gives a frame's masks once its tracks are followed into it: `correspondences` are the

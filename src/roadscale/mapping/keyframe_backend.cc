@@ -137,6 +137,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
   mapped.frame_index = frontend.frame_index;
   pending.observations = frontend.observations;
   std::vector<MappedFrame> out;
+  for (int64_t id : frontend.late_dynamic_track_ids) window_.RemoveTrack(id);
 
   if (!has_frame_) {
     has_frame_ = true;

@@ -39,6 +39,11 @@ void LocalWindow::RemoveObservation(Keyframe* keyframe, int64_t track_id) {
   if (landmark != landmarks_.end() && CountObservations(track_id) < 2) landmarks_.erase(landmark);
 }
 
+void LocalWindow::RemoveTrack(int64_t track_id) {
+  for (Keyframe& keyframe : keyframes_) keyframe.observations.erase(track_id);
+  landmarks_.erase(track_id);
+}
+
 void LocalWindow::RemoveWeakLandmarks() {
   for (auto it = landmarks_.begin(); it != landmarks_.end();) {
     it = CountObservations(it->first) < 2 ? landmarks_.erase(it) : std::next(it);

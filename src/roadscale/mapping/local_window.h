@@ -32,6 +32,8 @@ class LocalWindow {
   void RemoveOldestKeyframe();
   // Erases one observation and, when it leaves fewer than two, the landmark.
   void RemoveObservation(Keyframe* keyframe, int64_t track_id);
+  // Erases a track everywhere: its observations in every keyframe and its landmark.
+  void RemoveTrack(int64_t track_id);
   // Erases the landmarks observed by fewer than two keyframes.
   void RemoveWeakLandmarks();
   // Multiplies every keyframe position and landmark by `factor` about the oldest keyframe's

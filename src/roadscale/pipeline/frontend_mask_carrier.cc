@@ -67,7 +67,12 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
   road_ = CarryRoadMask(anchor_.road_mask, cur_from_anchor_);
   const cv::Mat dynamic = CarryDynamicMask(anchor_.dynamic_mask, cur_from_anchor_,
                                            frame_index - anchor_frame_, options_);
-  return {StaticMaskOf(dynamic), dynamic};
+  FrontendMasks masks{StaticMaskOf(dynamic), dynamic};
+  if (due >= 0) {
+    masks.segmented_frame = due;
+    masks.segmented_dynamic_mask = anchor_.dynamic_mask;
+  }
+  return masks;
 }
 
 }  // namespace roadscale
