@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "roadscale/frontend/two_view_motion.h"
+#include "roadscale/mapping/road_height_gate.h"
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane_ransac.h"
 #include "roadscale/util/error.h"
@@ -48,6 +49,8 @@ void MappingOptions::Check() const {
   CheckOption(road_min_points_per_pair >= 3, "mapping.road_min_points_per_pair",
               "must be >= 3 (a plane needs three points)");
   CheckOption(road_pool_pairs >= 1, "mapping.road_pool_pairs", "must be >= 1 (1: no pooling)");
+  CheckOption(road_max_height_ratio > 1.0 && std::isfinite(road_max_height_ratio),
+              "mapping.road_max_height_ratio", "must be a number > 1");
   keyframes.Check();
   landmarks.Check();
   localization.Check();
@@ -267,32 +270,48 @@ int KeyframeBackend::MarkPooledRoadLandmarks(const Keyframe& anchor, const Rigid
 
 int KeyframeBackend::MarkRoad(const std::vector<int64_t>& landmark_ids, const Keyframe& anchor,
                               const Eigen::Vector3d& normal_in_anchor) {
-  int marked = 0;
+  std::vector<int64_t> ids;
+  std::vector<double> heights;
   for (int64_t id : landmark_ids) {
     const auto landmark = window_.landmarks().find(id);
     if (landmark == window_.landmarks().end() || landmark->second.is_road) continue;
-    landmark->second.is_road = true;
-    landmark->second.road_anchor_frame = anchor.frame_index;
-    landmark->second.road_normal_in_anchor = normal_in_anchor;
-    ++marked;
+    ids.push_back(id);
+    heights.push_back(normal_in_anchor.dot(anchor.cam_from_world * landmark->second.position));
   }
-  return marked;
+  if (ids.empty()) return 0;
+  // The map's scale changes slowly between road fixes; a plane at a very different height
+  // is something else (a truck's side, a bridge, traffic moving with the car) that the
+  // selection let through. A few such points agree with each other and would pull the whole
+  // window to their scale, which the robust loss cannot stop when they are nearly as many as
+  // the true road points.
+  if (!RoadHeightsAgree(heights, RoadLandmarkHeights(), options_.road_max_height_ratio)) return 0;
+  for (int64_t id : ids) {
+    Landmark& landmark = window_.landmarks().at(id);
+    landmark.is_road = true;
+    landmark.road_anchor_frame = anchor.frame_index;
+    landmark.road_normal_in_anchor = normal_in_anchor;
+  }
+  return static_cast<int>(ids.size());
 }
 
-void KeyframeBackend::ScaleMapOnFirstRoad() {
-  if (window_.CountRoadLandmarks() < options_.bundle_adjustment.min_road_landmarks) return;
+std::vector<double> KeyframeBackend::RoadLandmarkHeights() const {
   std::vector<double> heights;
   for (const auto& [id, landmark] : window_.landmarks()) {
     const Keyframe* anchor = window_.FindKeyframe(landmark.road_anchor_frame);
     if (!landmark.is_road || anchor == nullptr) continue;
-    const double height =
-        landmark.road_normal_in_anchor.dot(anchor->cam_from_world * landmark.position);
-    if (height > 0.0) heights.push_back(height);
+    heights.push_back(
+        landmark.road_normal_in_anchor.dot(anchor->cam_from_world * landmark.position));
   }
+  return heights;
+}
+
+void KeyframeBackend::ScaleMapOnFirstRoad() {
+  if (window_.CountRoadLandmarks() < options_.bundle_adjustment.min_road_landmarks) return;
+  std::vector<double> heights = RoadLandmarkHeights();
+  heights.erase(std::remove_if(heights.begin(), heights.end(), [](double h) { return !(h > 0.0); }),
+                heights.end());
   if (heights.empty()) return;
-  const auto middle = heights.begin() + static_cast<long>(heights.size() / 2);
-  std::nth_element(heights.begin(), middle, heights.end());
-  const double factor = camera_height_ / *middle;
+  const double factor = camera_height_ / MedianOf(heights);
   window_.Rescale(factor);
   for (PendingFrame& frame : pending_) {
     frame.keyframe_from_cam.translation() *= factor;

@@ -173,6 +173,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("landmark_max_reprojection_error_px", &a.landmarks.max_reprojection_error_px),
         Scalar("road_min_points_per_pair", &a.road_min_points_per_pair),
         Scalar("road_pool_pairs", &a.road_pool_pairs),
+        Scalar("road_max_height_ratio", &a.road_max_height_ratio),
         Scalar("localization_min_landmarks", &a.localization.min_landmarks),
         Scalar("localization_loss_px", &a.localization.loss_px),
         Scalar("localization_max_iterations", &a.localization.max_iterations),

@@ -1,0 +1,30 @@
+#include "roadscale/mapping/road_height_gate.h"
+
+#include <gtest/gtest.h>
+
+namespace roadscale {
+namespace {
+
+TEST(RoadHeightGate, MedianOfOddEvenAndNone) {
+  EXPECT_DOUBLE_EQ(MedianOf({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_DOUBLE_EQ(MedianOf({4.0, 1.0, 3.0, 2.0}), 3.0);
+  EXPECT_DOUBLE_EQ(MedianOf({}), 0.0);
+}
+
+TEST(RoadHeightGate, AcceptsThePlaneOfTheMapAndRejectsOneAtEightTimesItsHeight) {
+  const std::vector<double> window = {1.64, 1.66, 1.65, 1.63, 1.67, 1.65, 1.66, 1.64};
+  EXPECT_TRUE(RoadHeightsAgree({1.55, 1.58, 1.52}, window, 1.5));
+  EXPECT_TRUE(RoadHeightsAgree({2.3, 2.4, 2.35}, window, 1.5));  // 1.42 times: a drifted map
+  // Highway seed 1, keyframe 164: six points on a plane at 13.3 map units.
+  EXPECT_FALSE(RoadHeightsAgree({13.34, 13.47, 13.36, 13.34, 13.33, 13.36}, window, 1.5));
+  EXPECT_FALSE(RoadHeightsAgree({0.9, 1.0, 0.95}, window, 1.5));  // below as well as above
+  EXPECT_FALSE(RoadHeightsAgree({}, window, 1.5));
+}
+
+TEST(RoadHeightGate, AgreesWhenTheWindowHasTooFewRoadLandmarksToCompare) {
+  EXPECT_TRUE(RoadHeightsAgree({13.3, 13.4}, {1.65, 1.66}, 1.5));
+  EXPECT_TRUE(RoadHeightsAgree({13.3}, {}, 1.5));
+}
+
+}  // namespace
+}  // namespace roadscale
