@@ -23,6 +23,10 @@ struct KltOptions {
   // must land within this many pixels of where it started. Rejects the drifting tracks
   // (occlusions, repeated texture) that a one-way KLT reports as successes.
   double max_forward_backward_error_px = 0.5;
+  // Coarsest pyramid level of the backward pass (at most pyramid_levels). It starts at the point's
+  // own start, so a track that is right needs no coarse level to come back, and one that is
+  // wrong fails the check either way.
+  int backward_pyramid_levels = 3;
 
   // Throws Error naming the first invalid option.
   void Check() const;
