@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace roadscale {
 namespace {
@@ -41,12 +42,16 @@ void RotatePoint(const double* w, const double* p, Eigen::Vector3d* rotated,
                   (1.0 - costheta) * unit * unit.transpose();
     }
     if (by_rotation != nullptr) {
-      // d(R p)/dw = -[R p]x J(w), J the left Jacobian of SO(3):
-      // I + (1 - cos) / theta [u]x + (1 - sin / theta) [u]x^2 with u the unit axis.
-      const Eigen::Matrix3d left_jacobian =
-          Eigen::Matrix3d::Identity() + (1.0 - costheta) * theta_inverse * unit_skew +
-          (1.0 - sintheta * theta_inverse) * unit_skew * unit_skew;
-      *by_rotation = -Skew(*rotated) * left_jacobian;
+      // d(R p)/dw = -[q]x J(w) with q = R p and J the left Jacobian of SO(3),
+      // I + a [u]x + b [u]x^2 (u the unit axis, a = (1 - cos) / theta, b = 1 - sin / theta);
+      // expanded with [q]x [u]x = u q^T - (q.u) I so that no 3x3 product is needed.
+      const Eigen::Vector3d& q = *rotated;
+      const double a = (1.0 - costheta) * theta_inverse;
+      const double b = 1.0 - sintheta * theta_inverse;
+      const double q_dot_u = q.dot(unit);
+      *by_rotation = -Skew(q) - a * (unit * q.transpose()) -
+                     b * (unit * q.cross(unit).transpose()) +
+                     (a * q_dot_u) * Eigen::Matrix3d::Identity() + (b * q_dot_u) * unit_skew;
     }
   } else {
     // R p ~ p + w x p.
