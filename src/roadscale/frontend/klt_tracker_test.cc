@@ -126,8 +126,9 @@ TEST(KltTracker, BackwardPassFromEitherLevelFollowsLargeShiftsAndRejectsOccluder
     EXPECT_GE(ok, static_cast<int>(0.7 * points.size())) << "levels " << levels;
     EXPECT_FALSE(result.ok.back()) << "inside the occluder, levels " << levels;
     // The weakness of the finest level alone: a track that KLT sent far off from the edge of
-    // the occluder can stall at its start on the way back and pass (one of 96 here). The
-    // essential matrix's RANSAC removes such tracks (docs/benchmarks.md, "Frontend CPU").
+    // the occluder can stall at its start on the way back and pass (one of 96 here), which is
+    // why the default returns through the whole pyramid (docs/benchmarks.md, "CPU without the
+    // network").
     EXPECT_LE(wrong, levels == 0 ? 1 : 0) << "levels " << levels;
   }
 }
