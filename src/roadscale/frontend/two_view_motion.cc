@@ -66,16 +66,24 @@ RotationFit FitRotationRansac(const std::vector<Correspondence>& correspondences
     from[i] = prev_rays[i].normalized();
     to[i] = camera.Unproject(correspondences[i].cur).normalized();
   }
-  // The inliers of R, or fewer than `to_beat` of them (counting stops once the rest cannot
-  // reach `to_beat`: with translation most hypotheses lose, and this saves most of their cost).
+  // The inliers of R (RotationResidualPx below the threshold, with the same arithmetic), or
+  // fewer than `to_beat` of them: counting stops once the rest cannot reach `to_beat`. Under
+  // translation most hypotheses lose and most correspondences miss by far more than the
+  // threshold, so those are rejected on one coordinate before the square root.
+  const double threshold = options.ransac_threshold_px;
   const auto inliers_of = [&](const Eigen::Matrix3d& R, size_t to_beat) {
     std::vector<size_t> inliers;
     for (size_t i = 0; i < n; ++i) {
       if (inliers.size() + (n - i) < to_beat) break;
-      if (RotationResidualPx(camera, R, prev_rays[i], correspondences[i].cur) <
-          options.ransac_threshold_px) {
-        inliers.push_back(i);
+      const Eigen::Vector3d ray = R * prev_rays[i];
+      if (ray.z() <= 0.0) continue;
+      const Eigen::Vector2d& cur = correspondences[i].cur;
+      const Eigen::Vector2d error(camera.fx * ray.x() / ray.z() + camera.cx - cur.x(),
+                                  camera.fy * ray.y() / ray.z() + camera.cy - cur.y());
+      if (std::abs(error.x()) >= 2.0 * threshold || std::abs(error.y()) >= 2.0 * threshold) {
+        continue;
       }
+      if (error.norm() < threshold) inliers.push_back(i);
     }
     return inliers;
   };
