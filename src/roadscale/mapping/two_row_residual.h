@@ -19,15 +19,8 @@ class TwoRowResidual : public ceres::SizedCostFunction<2, 6, 3> {
 
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    double* one_row_jacobians[2] = {nullptr, nullptr};
-    if (jacobians != nullptr) {
-      one_row_jacobians[0] = jacobians[0];  // row-major: the first row of each block
-      one_row_jacobians[1] = jacobians[1];
-    }
-    if (!one_row_->Evaluate(parameters, residuals,
-                            jacobians != nullptr ? one_row_jacobians : nullptr)) {
-      return false;
-    }
+    // Jacobian blocks are row-major, so the one-row cost fills the first row of each.
+    if (!one_row_->Evaluate(parameters, residuals, jacobians)) return false;
     residuals[1] = 0.0;
     if (jacobians != nullptr) {
       if (jacobians[0] != nullptr) std::fill(jacobians[0] + 6, jacobians[0] + 12, 0.0);
