@@ -83,10 +83,13 @@ BENCHMARK(BM_Detect)
     ->Unit(benchmark::kMillisecond);
 
 // What the tracker does every frame: the new frame's pyramid, then KLT of the previous
-// frame's features into it and back (the previous pyramid is kept from the last frame).
+// frame's features into it and back (the previous pyramid is kept from the last frame). The
+// arguments are the window size and the backward pass's coarsest pyramid level.
 void BM_KltTrack(benchmark::State& state) {
   if (!HaveFrames(state)) return;
-  const KltOptions options;
+  KltOptions options;
+  options.window_size = static_cast<int>(state.range(0));
+  options.backward_pyramid_levels = static_cast<int>(state.range(1));
   const FeatureDetector detector({});
   std::vector<KltPyramid> previous;
   std::vector<std::vector<cv::Point2f>> points;
@@ -104,12 +107,14 @@ void BM_KltTrack(benchmark::State& state) {
     total += points[i].size();
     i = (i + 1) % FramePairs().size();
   }
+  state.SetLabel(std::to_string(options.window_size) + " px window, backward pass to level " +
+                 std::to_string(options.backward_pyramid_levels));
   state.counters["points"] =
       benchmark::Counter(static_cast<double>(total), benchmark::Counter::kAvgIterations);
   state.counters["tracked"] =
       benchmark::Counter(static_cast<double>(tracked), benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_KltTrack)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_KltTrack)->Args({21, 3})->Args({21, 1})->Args({21, 0})->Unit(benchmark::kMillisecond);
 
 // The two-view motion (stationary / rotation checks, 5-point RANSAC, recoverPose and the
 // Sampson refinement) on the tracked correspondences of each pair.

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   build-essential cmake pkg-config git clang-format
   libopencv-dev libeigen3-dev libceres-dev libyaml-cpp-dev libcli11-dev
-  libspdlog-dev libfmt-dev nlohmann-json3-dev libcairo2-dev
+  libspdlog-dev libfmt-dev nlohmann-json3-dev libcairo2-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   slurm-wlm munge  # roadscale batch's live Slurm test (tests/batch_slurm_test.sh)
 )

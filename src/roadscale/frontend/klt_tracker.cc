@@ -1,5 +1,6 @@
 #include "roadscale/frontend/klt_tracker.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/video/tracking.hpp>
@@ -18,6 +19,8 @@ void KltOptions::Check() const {
               "klt.min_eigen_threshold", "must be non-negative");
   CheckOption(std::isfinite(max_forward_backward_error_px) && max_forward_backward_error_px > 0.0,
               "klt.max_forward_backward_error_px", "must be positive");
+  CheckOption(backward_pyramid_levels >= 0 && backward_pyramid_levels <= 8,
+              "klt.backward_pyramid_levels", "must be in 0..8");
 }
 
 KltPyramid BuildKltPyramid(const cv::Mat& image, const KltOptions& options) {
@@ -75,8 +78,9 @@ KltResult TrackKlt(const KltPyramid& prev, const KltPyramid& cur,
   if (index.empty()) return result;
   std::vector<unsigned char> backward_status;
   cv::calcOpticalFlowPyrLK(cur.levels, prev.levels, forward_points, back_points, backward_status,
-                           error, window, options.pyramid_levels, criteria,
-                           cv::OPTFLOW_USE_INITIAL_FLOW, options.min_eigen_threshold);
+                           error, window,
+                           std::min(options.backward_pyramid_levels, options.pyramid_levels),
+                           criteria, cv::OPTFLOW_USE_INITIAL_FLOW, options.min_eigen_threshold);
 
   const float max_fb = static_cast<float>(options.max_forward_backward_error_px);
   for (size_t k = 0; k < index.size(); ++k) {

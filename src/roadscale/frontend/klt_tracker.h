@@ -23,6 +23,14 @@ struct KltOptions {
   // must land within this many pixels of where it started. Rejects the drifting tracks
   // (occlusions, repeated texture) that a one-way KLT reports as successes.
   double max_forward_backward_error_px = 0.5;
+  // Coarsest pyramid level of the backward pass (at most pyramid_levels). The pass starts at
+  // the point's own start, so a right track comes back from the finest level alone, at 0.7 of
+  // the KLT CPU; but a wrong track can then stall at its start and pass the check too (KITTI
+  // 00: 1.8 % instead of 1.3 % of the correspondences fail the essential matrix), and on the
+  // three rendered highways t_err grew from 3.7 / 4.9 / 6.2 % to 4.2 / 7.7 / 10.0 % while the
+  // town drives gained (docs/benchmarks.md, "CPU without the network"). Hence the whole
+  // pyramid by default.
+  int backward_pyramid_levels = 3;
 
   // Throws Error naming the first invalid option.
   void Check() const;

@@ -39,11 +39,13 @@ Eigen::Matrix3d FitRotation(const std::vector<Eigen::Vector3d>& from,
 
 // Pixel distance between the current position and the previous one moved by rotation R
 // alone: the parallax of the correspondence, or infinity when R turns it behind the camera.
+// `prev_ray` is camera.Unproject(c.prev), passed in so that the rotation RANSAC computes it
+// once per correspondence rather than once per hypothesis.
 double RotationResidualPx(const PinholeCamera& camera, const Eigen::Matrix3d& R,
-                          const Correspondence& c) {
-  const Eigen::Vector3d ray = R * camera.Unproject(c.prev);
+                          const Eigen::Vector3d& prev_ray, const Eigen::Vector2d& cur) {
+  const Eigen::Vector3d ray = R * prev_ray;
   if (ray.z() <= 0.0) return std::numeric_limits<double>::infinity();
-  return (camera.Project(ray) - c.cur).norm();
+  return (camera.Project(ray) - cur).norm();
 }
 
 struct RotationFit {
@@ -56,18 +58,32 @@ struct RotationFit {
 RotationFit FitRotationRansac(const std::vector<Correspondence>& correspondences,
                               const PinholeCamera& camera, const TwoViewMotionOptions& options) {
   const size_t n = correspondences.size();
+  std::vector<Eigen::Vector3d> prev_rays(n);
   std::vector<Eigen::Vector3d> from(n);
   std::vector<Eigen::Vector3d> to(n);
   for (size_t i = 0; i < n; ++i) {
-    from[i] = camera.Unproject(correspondences[i].prev).normalized();
+    prev_rays[i] = camera.Unproject(correspondences[i].prev);
+    from[i] = prev_rays[i].normalized();
     to[i] = camera.Unproject(correspondences[i].cur).normalized();
   }
-  const auto inliers_of = [&](const Eigen::Matrix3d& R) {
+  // The inliers of R (RotationResidualPx below the threshold, with the same arithmetic), or
+  // fewer than `to_beat` of them: counting stops once the rest cannot reach `to_beat`. Under
+  // translation most hypotheses lose and most correspondences miss by far more than the
+  // threshold, so those are rejected on one coordinate before the square root.
+  const double threshold = options.ransac_threshold_px;
+  const auto inliers_of = [&](const Eigen::Matrix3d& R, size_t to_beat) {
     std::vector<size_t> inliers;
     for (size_t i = 0; i < n; ++i) {
-      if (RotationResidualPx(camera, R, correspondences[i]) < options.ransac_threshold_px) {
-        inliers.push_back(i);
+      if (inliers.size() + (n - i) < to_beat) break;
+      const Eigen::Vector3d ray = R * prev_rays[i];
+      if (ray.z() <= 0.0) continue;
+      const Eigen::Vector2d& cur = correspondences[i].cur;
+      const Eigen::Vector2d error(camera.fx * ray.x() / ray.z() + camera.cx - cur.x(),
+                                  camera.fy * ray.y() / ray.z() + camera.cy - cur.y());
+      if (std::abs(error.x()) >= 2.0 * threshold || std::abs(error.y()) >= 2.0 * threshold) {
+        continue;
       }
+      if (error.norm() < threshold) inliers.push_back(i);
     }
     return inliers;
   };
@@ -82,7 +98,7 @@ RotationFit FitRotationRansac(const std::vector<Correspondence>& correspondences
     size_t b = pick(rng);
     if (a == b) b = (b + 1) % n;
     const Eigen::Matrix3d R = FitRotation(from, to, {a, b});
-    std::vector<size_t> inliers = inliers_of(R);
+    std::vector<size_t> inliers = inliers_of(R, best.inliers.size() + 1);
     if (inliers.size() <= best.inliers.size()) continue;
     best.rotation = R;
     best.inliers = std::move(inliers);
@@ -94,7 +110,7 @@ RotationFit FitRotationRansac(const std::vector<Correspondence>& correspondences
   }
   if (best.inliers.size() >= 2) {
     best.rotation = FitRotation(from, to, best.inliers);
-    best.inliers = inliers_of(best.rotation);
+    best.inliers = inliers_of(best.rotation, 0);
   }
   return best;
 }
@@ -159,7 +175,10 @@ double MedianParallaxPx(const std::vector<Correspondence>& correspondences,
                         const std::vector<size_t>& subset) {
   std::vector<double> residuals;
   residuals.reserve(subset.size());
-  for (size_t i : subset) residuals.push_back(RotationResidualPx(camera, R, correspondences[i]));
+  for (size_t i : subset) {
+    const Correspondence& c = correspondences[i];
+    residuals.push_back(RotationResidualPx(camera, R, camera.Unproject(c.prev), c.cur));
+  }
   return Median(std::move(residuals));
 }
 

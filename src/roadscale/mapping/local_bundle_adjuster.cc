@@ -13,6 +13,7 @@
 #include "roadscale/mapping/camera_height_residual.h"
 #include "roadscale/mapping/pose_parameters.h"
 #include "roadscale/mapping/reprojection_residual.h"
+#include "roadscale/mapping/two_row_residual.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -82,8 +83,8 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
     const auto anchor = pose_of_frame.find(landmark.road_anchor_frame);
     if (anchor == pose_of_frame.end()) continue;
     problem.AddResidualBlock(
-        CameraHeightResidual::Create(landmark.road_normal_in_anchor, camera_height,
-                                     options.camera_height_sigma_m),
+        new TwoRowResidual(CameraHeightResidual::Create(
+            landmark.road_normal_in_anchor, camera_height, options.camera_height_sigma_m)),
         &height_loss, poses[anchor->second].data(), points[id].data());
   }
   for (size_t k = 0; k < poses.size(); ++k) {

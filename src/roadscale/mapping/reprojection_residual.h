@@ -1,7 +1,6 @@
 #pragma once
 
-#include <ceres/autodiff_cost_function.h>
-#include <ceres/rotation.h>
+#include <ceres/sized_cost_function.h>
 
 #include "roadscale/geometry/pinhole_camera.h"
 
@@ -10,27 +9,19 @@
 namespace roadscale {
 
 // Pixel error of a world point seen by a camera (parameters: the cam_from_world pose as in
-// pose_parameters.h, the point). A point behind the camera gives a large constant error
-// rather than a projection through the centre, which would flip to the image.
-class ReprojectionResidual {
+// pose_parameters.h, the point), with analytic Jacobians: Ceres' automatic derivatives of the
+// same error cost about half of a keyframe's bundle adjustment (docs/benchmarks.md, "Keyframe
+// back end"). A point less than 1e-6 in front of the camera fails the evaluation (Ceres then
+// rejects the step) rather than projecting through the centre, which would flip it to the image.
+class ReprojectionResidual : public ceres::SizedCostFunction<2, 6, 3> {
  public:
-  ReprojectionResidual(const PinholeCamera& camera, const Eigen::Vector2d& observed)
-      : fx_(camera.fx), fy_(camera.fy), cx_(camera.cx), cy_(camera.cy), observed_(observed) {}
+  ReprojectionResidual(const PinholeCamera& camera, const Eigen::Vector2d& observed);
 
-  template <typename T>
-  bool operator()(const T* cam_from_world, const T* point_world, T* residual) const {
-    T point_cam[3];
-    ceres::AngleAxisRotatePoint(cam_from_world, point_world, point_cam);
-    for (int i = 0; i < 3; ++i) point_cam[i] += cam_from_world[3 + i];
-    if (point_cam[2] < T(1e-6)) return false;
-    residual[0] = T(fx_) * point_cam[0] / point_cam[2] + T(cx_) - T(observed_.x());
-    residual[1] = T(fy_) * point_cam[1] / point_cam[2] + T(cy_) - T(observed_.y());
-    return true;
-  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
 
   static ceres::CostFunction* Create(const PinholeCamera& camera, const Eigen::Vector2d& observed) {
-    return new ceres::AutoDiffCostFunction<ReprojectionResidual, 2, 6, 3>(
-        new ReprojectionResidual(camera, observed));
+    return new ReprojectionResidual(camera, observed);
   }
 
  private:
@@ -39,22 +30,18 @@ class ReprojectionResidual {
 };
 
 // The same error of a known point for a pose alone (motion-only refinement).
-class PoseOnlyReprojectionResidual {
+class PoseOnlyReprojectionResidual : public ceres::SizedCostFunction<2, 6> {
  public:
   PoseOnlyReprojectionResidual(const PinholeCamera& camera, const Eigen::Vector2d& observed,
                                const Eigen::Vector3d& point_world)
       : residual_(camera, observed), point_(point_world) {}
 
-  template <typename T>
-  bool operator()(const T* cam_from_world, T* residual) const {
-    const T point[3] = {T(point_.x()), T(point_.y()), T(point_.z())};
-    return residual_(cam_from_world, point, residual);
-  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
 
   static ceres::CostFunction* Create(const PinholeCamera& camera, const Eigen::Vector2d& observed,
                                      const Eigen::Vector3d& point_world) {
-    return new ceres::AutoDiffCostFunction<PoseOnlyReprojectionResidual, 2, 6>(
-        new PoseOnlyReprojectionResidual(camera, observed, point_world));
+    return new PoseOnlyReprojectionResidual(camera, observed, point_world);
   }
 
  private:

@@ -116,6 +116,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("klt_epsilon", &k.epsilon),
         Scalar("klt_min_eigen_threshold", &k.min_eigen_threshold),
         Scalar("klt_max_forward_backward_error_px", &k.max_forward_backward_error_px),
+        Scalar("klt_backward_pyramid_levels", &k.backward_pyramid_levels),
         Scalar("predict_with_rotation", &f.predict_with_rotation),
         Scalar("drop_outliers", &f.drop_outliers),
         Scalar("ransac_threshold_px", &m.ransac_threshold_px),
