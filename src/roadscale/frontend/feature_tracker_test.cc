@@ -117,7 +117,9 @@ TEST(FeatureTracker, DropsTracksByTheirPixelInAnEarlierSegmentedFrame) {
   EXPECT_EQ(tracker.stats().dropped_dynamic, static_cast<int>(dropped.size()));
   bool kept_one_born_later_on_the_mask_area = false;
   for (const Track& track : tracker.tracks()) {
-    if (track.first_frame == 0) EXPECT_GE(track.pixels.front().x(), 99.5);
+    if (track.first_frame == 0) {
+      EXPECT_GE(track.pixels.front().x(), 99.5);
+    }
     if (track.first_frame == 3 && track.pixels.back().x() < 99.5) {
       kept_one_born_later_on_the_mask_area = true;
     }
