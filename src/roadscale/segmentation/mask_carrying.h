@@ -20,7 +20,12 @@ struct MaskCarryOptions {
   double road_ransac_threshold_px = 2.0;
   // The moving-object mask grows by this many pixels per frame it is carried: what a car's
   // own motion can move its outline that the road's motion at its wheels does not explain.
-  double dynamic_growth_px_per_frame = 2.0;
+  // 0 since the frontend checks every track against each segmented frame's own mask when it
+  // arrives (FeatureTracker::DropOnMaskAt): the tracks a car's own motion carries out of its
+  // carried mask are caught there, while 2 px a frame dropped twelve times as many static
+  // tracks around parked cars and cost accuracy (docs/benchmarks.md, "Segmenting keyframes
+  // only").
+  double dynamic_growth_px_per_frame = 0.0;
 
   // Throws Error naming the first invalid option.
   void Check() const;

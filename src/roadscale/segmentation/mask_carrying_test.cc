@@ -51,7 +51,7 @@ TEST(MaskCarrying, FitsTheRoadHomographyToTheTracksOnTheRoadMask) {
   const std::optional<Eigen::Matrix3d> fitted =
       FitRoadHomography(prev, cur, road, MaskCarryOptions());
   ASSERT_TRUE(fitted.has_value());
-  for (const Eigen::Vector2d p : {Eigen::Vector2d(600, 300), Eigen::Vector2d(100, 355)}) {
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(600, 300), Eigen::Vector2d(100, 355)}) {
     EXPECT_LT((Apply(*fitted, p) - Apply(truth, p)).norm(), 0.05);
   }
   // Too few road tracks: no fit.
@@ -101,8 +101,9 @@ TEST(MaskCarrying, MovesACarWithTheRoadUnderItAndGrowsItForItsOwnMotion) {
   // The car drives off to the side by 1.5 px a frame, which the road does not explain: two
   // frames later the 2 px a frame of growth still covers it.
   const cv::Mat moving = draw(8.0, 3.0);
-  const cv::Mat grown =
-      CarryDynamicMask(draw(10.0, 0.0), RoadHomography(2.0), 2, MaskCarryOptions());
+  MaskCarryOptions growing;
+  growing.dynamic_growth_px_per_frame = 2.0;
+  const cv::Mat grown = CarryDynamicMask(draw(10.0, 0.0), RoadHomography(2.0), 2, growing);
   const double missed = 1.0 - cv::countNonZero(grown & moving) / double(cv::countNonZero(moving));
   EXPECT_LT(missed, 0.02);
   // Without growth a car that drove 6 px off its road-carried place is partly missed.
