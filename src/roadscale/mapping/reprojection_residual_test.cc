@@ -29,17 +29,6 @@ struct AutoDiffReprojection {
   }
 };
 
-PinholeCamera KittiCamera() {
-  PinholeCamera camera;
-  camera.fx = 718.856;
-  camera.fy = 718.856;
-  camera.cx = 607.1928;
-  camera.cy = 185.2157;
-  camera.width = 1241;
-  camera.height = 376;
-  return camera;
-}
-
 struct Evaluation {
   bool ok = false;
   double residual[2] = {0.0, 0.0};
@@ -91,7 +80,7 @@ RandomCase MakeCase(std::mt19937* rng, double max_angle) {
 }
 
 void CompareWithAutoDiff(const RandomCase& c) {
-  const PinholeCamera camera = KittiCamera();
+  const PinholeCamera camera = KittiOdometryCamera();
   const std::unique_ptr<ceres::CostFunction> analytic(
       ReprojectionResidual::Create(camera, c.observed));
   const ceres::AutoDiffCostFunction<AutoDiffReprojection, 2, 6, 3> automatic(
@@ -134,7 +123,7 @@ TEST(ReprojectionResidual, JacobiansEqualAutomaticDerivativesAtSmallAngles) {
 
 TEST(ReprojectionResidual, FailsForAPointBehindTheCamera) {
   const std::unique_ptr<ceres::CostFunction> cost(
-      ReprojectionResidual::Create(KittiCamera(), Eigen::Vector2d(600.0, 180.0)));
+      ReprojectionResidual::Create(KittiOdometryCamera(), Eigen::Vector2d(600.0, 180.0)));
   const double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const double point[3] = {1.0, 0.5, -4.0};
   EXPECT_FALSE(Evaluate(*cost, pose, point).ok);
@@ -144,7 +133,7 @@ TEST(ReprojectionResidual, EvaluatesWithoutJacobiansOrWithOnlyOne) {
   std::mt19937 rng(3);
   const RandomCase c = MakeCase(&rng, 0.5);
   const std::unique_ptr<ceres::CostFunction> cost(
-      ReprojectionResidual::Create(KittiCamera(), c.observed));
+      ReprojectionResidual::Create(KittiOdometryCamera(), c.observed));
   const Evaluation full = Evaluate(*cost, c.pose, c.point);
   const double* parameters[2] = {c.pose, c.point};
   double residual[2];
