@@ -17,6 +17,21 @@ double MillisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// Whether `pixel`, rounded and clamped to the image, lies on the non-zero part of `mask`.
+bool IsOnMask(const cv::Mat& mask, const Eigen::Vector2d& pixel) {
+  const int x = std::clamp(static_cast<int>(std::lround(pixel.x())), 0, mask.cols - 1);
+  const int y = std::clamp(static_cast<int>(std::lround(pixel.y())), 0, mask.rows - 1);
+  return mask.at<unsigned char>(y, x) != 0;
+}
+
+// Throws Error unless `mask` is empty or 8-bit single channel of `size`.
+void CheckDynamicMask(const cv::Mat& mask, const cv::Size& size, int frame_index) {
+  if (!mask.empty() && (mask.type() != CV_8UC1 || mask.size() != size)) {
+    throw Error("frame " + std::to_string(frame_index) +
+                ": the dynamic mask must be 8-bit single channel and of the image's size");
+  }
+}
+
 cv::Point2f ToCv(const Eigen::Vector2d& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y())};
 }
@@ -45,11 +60,7 @@ int FeatureTracker::Track(int frame_index, const cv::Mat& image, const cv::Mat& 
                 " differs from the previous frame's " + std::to_string(image_.cols) + "x" +
                 std::to_string(image_.rows));
   }
-  if (!dynamic_mask.empty() &&
-      (dynamic_mask.type() != CV_8UC1 || dynamic_mask.size() != image.size())) {
-    throw Error("frame " + std::to_string(frame_index) +
-                ": the dynamic mask must be 8-bit single channel and of the image's size");
-  }
+  CheckDynamicMask(dynamic_mask, image.size(), frame_index);
   if (current_frame_ >= 0 && frame_index != current_frame_ + 1) {
     throw Error("frame " + std::to_string(frame_index) + " does not follow frame " +
                 std::to_string(current_frame_) + ": the tracker needs consecutive frames");
@@ -99,20 +110,13 @@ int FeatureTracker::Track(int frame_index, const cv::Mat& image, const cv::Mat& 
 }
 
 void FeatureTracker::DropOnMask(const cv::Mat& dynamic_mask) {
-  if (!dynamic_mask.empty() &&
-      (dynamic_mask.type() != CV_8UC1 || dynamic_mask.size() != image_.size())) {
-    throw Error("frame " + std::to_string(current_frame_) +
-                ": the dynamic mask must be 8-bit single channel and of the image's size");
-  }
+  CheckDynamicMask(dynamic_mask, image_.size(), current_frame_);
   if (!dynamic_mask.empty()) {
     const auto start = std::chrono::steady_clock::now();
     // Only tracks carried into this frame: one born here was detected off the mask.
     const auto on_mask = [&](const roadscale::Track& track) {
       if (track.last_frame() != current_frame_ || track.length() < 2) return false;
-      const Eigen::Vector2d& p = track.pixels.back();
-      const int x = std::clamp(static_cast<int>(std::lround(p.x())), 0, dynamic_mask.cols - 1);
-      const int y = std::clamp(static_cast<int>(std::lround(p.y())), 0, dynamic_mask.rows - 1);
-      return dynamic_mask.at<unsigned char>(y, x) != 0;
+      return IsOnMask(dynamic_mask, track.pixels.back());
     };
     const size_t before = tracks_.size();
     tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(), on_mask), tracks_.end());
@@ -126,17 +130,14 @@ void FeatureTracker::DropOnMask(const cv::Mat& dynamic_mask) {
 
 std::vector<int64_t> FeatureTracker::DropOnMaskAt(int frame_index, const cv::Mat& dynamic_mask) {
   std::vector<int64_t> dropped;
+  CheckDynamicMask(dynamic_mask, image_.size(), frame_index);
   if (dynamic_mask.empty()) return dropped;
-  if (dynamic_mask.type() != CV_8UC1 || dynamic_mask.size() != image_.size()) {
-    throw Error("frame " + std::to_string(frame_index) +
-                ": the dynamic mask must be 8-bit single channel and of the image's size");
-  }
   const auto on_mask = [&](const roadscale::Track& track) {
     if (frame_index < track.first_frame || frame_index > track.last_frame()) return false;
-    const Eigen::Vector2d& p = track.pixels[static_cast<size_t>(frame_index - track.first_frame)];
-    const int x = std::clamp(static_cast<int>(std::lround(p.x())), 0, dynamic_mask.cols - 1);
-    const int y = std::clamp(static_cast<int>(std::lround(p.y())), 0, dynamic_mask.rows - 1);
-    if (dynamic_mask.at<unsigned char>(y, x) == 0) return false;
+    if (!IsOnMask(dynamic_mask,
+                  track.pixels[static_cast<size_t>(frame_index - track.first_frame)])) {
+      return false;
+    }
     dropped.push_back(track.id);
     return true;
   };
