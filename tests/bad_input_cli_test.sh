@@ -310,10 +310,22 @@ if [[ "$mode" == "runs" ]]; then
   # the signal must still write every frame read so far. The frame-to-frame host writes each
   # scaled frame at once, so the wait for the first row below works.
   printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
+  # 400 frames (the 40 rendered ones there and back, the trajectory with them), so that no
+  # machine finishes a run before its signal.
+  long="$out/long/sequences/00"
+  mkdir -p "$long/image_0"
+  cp "$seq/calib.txt" "$seq/camera.yaml" "$long/"
+  for i in $(seq 0 399); do
+    k=$((i % 78))
+    ((k < 40)) || k=$((78 - k))
+    ln -s "$seq/image_0/$(printf %06d $k).png" "$long/image_0/$(printf %06d "$i").png"
+    sed -n "$((k + 1))p" "$out/data/poses/00.txt" >>"$out/long/trajectory.txt"
+  done
+  awk 'BEGIN { for (i = 0; i < 400; i++) printf "%e\n", i * 0.1 }' >"$long/times.txt"
   for signal in TERM INT; do
     cases=$((cases + 1))
     run_dir="$out/signal_$signal"
-    "$roadscale" run --kitti "$seq" --no-segmentation --config "$out/noroad.yaml" --sequential \
+    "$roadscale" run --kitti "$long" --no-segmentation --config "$out/noroad.yaml" --sequential \
       --out "$run_dir" >/dev/null 2>"$out/stderr.txt" &
     pid=$!
     for _ in $(seq 1 400); do
@@ -321,7 +333,7 @@ if [[ "$mode" == "runs" ]]; then
       sleep 0.05
     done
     sleep 1
-    kill -"$signal" "$pid"
+    kill -"$signal" "$pid" || fail "SIG$signal: the run ended before the signal"
     status=0
     wait "$pid" || status=$?
     [[ $status -eq 1 ]] || fail "SIG$signal: exit $status, expected 1: $(cat "$out/stderr.txt")"
@@ -329,7 +341,7 @@ if [[ "$mode" == "runs" ]]; then
     grep -Eq "interrupted after [0-9]+ frames: .*poses_kitti\.txt" "$out/stderr.txt" ||
       fail "SIG$signal: $(cat "$out/stderr.txt")"
     n="$(sed -E 's/.*interrupted after ([0-9]+) frames.*/\1/' "$out/stderr.txt")"
-    [[ "$n" -ge 2 && "$n" -lt 40 ]] || fail "SIG$signal: $n frames"
+    [[ "$n" -ge 2 && "$n" -lt 400 ]] || fail "SIG$signal: $n frames"
     check_pose_rows "$run_dir" "$n"
     [[ "$(rows "$run_dir/frames.csv")" -eq $((n + 1)) ]] || fail "SIG$signal: frames.csv rows"
     [[ "$(grep -c ',unscaled,' "$run_dir/frames.csv")" -eq $((n - 1)) ]] ||
@@ -340,22 +352,22 @@ if [[ "$mode" == "runs" ]]; then
   for signal in TERM INT; do
     cases=$((cases + 1))
     run_dir="$out/rescale_$signal"
-    "$roadscale" rescale --trajectory "$out/data/poses/00.txt" --kitti "$seq" --no-segmentation \
+    "$roadscale" rescale --trajectory "$out/long/trajectory.txt" --kitti "$long" --no-segmentation \
       --out "$run_dir" >/dev/null 2>"$out/stderr.txt" &
     pid=$!
     for _ in $(seq 1 400); do
       [[ -f "$run_dir/rescale.csv" && "$(rows "$run_dir/rescale.csv")" -ge 3 ]] && break
       sleep 0.05
     done
-    kill -"$signal" "$pid"
+    kill -"$signal" "$pid" || fail "rescale SIG$signal: the run ended before the signal"
     status=0
     wait "$pid" || status=$?
     [[ $status -eq 1 ]] || fail "rescale SIG$signal: exit $status: $(cat "$out/stderr.txt")"
     [[ "$(rows "$out/stderr.txt")" -eq 1 ]] || fail "rescale SIG$signal: $(cat "$out/stderr.txt")"
-    grep -Eq "interrupted after [0-9]+ of 40 poses: .*poses_kitti\.txt" "$out/stderr.txt" ||
+    grep -Eq "interrupted after [0-9]+ of 400 poses: .*poses_kitti\.txt" "$out/stderr.txt" ||
       fail "rescale SIG$signal: $(cat "$out/stderr.txt")"
     k="$(sed -E 's/.*interrupted after ([0-9]+) of.*/\1/' "$out/stderr.txt")"
-    [[ "$k" -ge 3 && "$k" -lt 40 ]] || fail "rescale SIG$signal: $k poses"
+    [[ "$k" -ge 3 && "$k" -lt 400 ]] || fail "rescale SIG$signal: $k poses"
     check_pose_rows "$run_dir" "$k"
     [[ "$(rows "$run_dir/rescale.csv")" -eq "$k" ]] || fail "rescale SIG$signal: rescale.csv rows"
   done
