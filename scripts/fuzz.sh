@@ -4,15 +4,20 @@
 # corpus in fuzz/corpus/<name>/. Installs clang and its fuzzer runtime (Debian packages) when
 # they are missing. Fails on the first target that crashes, leaks, hangs (10 s on one input)
 # or lets anything but roadscale::Error escape; the input that did it is kept in
-# build-fuzz/crashes/. Prints the executions of every target.
+# $build/crashes/. Prints the executions of every target.
 #
-#   scripts/fuzz.sh 20              # 20 s per target (CI)
+#   scripts/fuzz.sh 20              # 20 s per target
 #   JOBS=1 scripts/fuzz.sh 600      # longer runs
 #   FUZZ_SEED=0 scripts/fuzz.sh 60  # libFuzzer's own random seed (default 1: CI explores the
 #                                   # same inputs every time, as far as its time allows)
+#   scripts/fuzz.sh --install-only  # only clang and its runtimes (for a clang sanitizer build)
+#   FUZZ_BUILD_DIR=build-asan scripts/fuzz.sh 10
+#                                   # the targets of a build configured with ROADSCALE_FUZZ=ON
+#                                   # and ROADSCALE_SANITIZE=ON (CI: one instrumented build for
+#                                   # the unit tests and the fuzzers)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:?usage: scripts/fuzz.sh SECONDS}"
+seconds="${1:?usage: scripts/fuzz.sh SECONDS | --install-only}"
 
 PACKAGES=(clang libclang-rt-14-dev)
 missing=()
@@ -29,15 +34,22 @@ if ((${#missing[@]} > 0)); then
     "${missing[@]}"
 fi
 
-build=build-fuzz
+[[ "$seconds" == --install-only ]] && exit 0
+
+build="${FUZZ_BUILD_DIR:-build-fuzz}"
 targets=(kitti_calib kitti_times trajectory camera_yaml run_config model_yaml scene_yaml
   png_structure batch_manifest)
-# -O1 with line tables only, as OSS-Fuzz builds: enough for the sanitizers' stack traces,
-# and the build (the whole library, instrumented) is the slow part of a short run.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DCMAKE_C_COMPILER=clang \
-  -DCMAKE_CXX_COMPILER=clang++ -DROADSCALE_FUZZ=ON -DROADSCALE_SANITIZE=ON \
-  -DROADSCALE_BUILD_TESTS=OFF -DROADSCALE_BUILD_BENCHMARKS=OFF >/dev/null
+if [[ -z "${FUZZ_BUILD_DIR:-}" ]]; then
+  # -O1 with line tables only, as OSS-Fuzz builds: enough for the sanitizers' stack traces,
+  # and the build (the whole library, instrumented) is the slow part of a short run.
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DCMAKE_C_COMPILER=clang \
+    -DCMAKE_CXX_COMPILER=clang++ -DROADSCALE_FUZZ=ON -DROADSCALE_SANITIZE=ON \
+    -DROADSCALE_BUILD_TESTS=OFF -DROADSCALE_BUILD_BENCHMARKS=OFF >/dev/null
+elif ! grep -q '^ROADSCALE_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "fuzz: $build is not a build configured with -DROADSCALE_FUZZ=ON" >&2
+  exit 2
+fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/%/_fuzzer}"
 
 mkdir -p "$build/crashes"
