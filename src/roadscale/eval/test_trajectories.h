@@ -58,11 +58,15 @@ inline std::vector<Rigid3d> PerturbedEstimate(const std::vector<Rigid3d>& gt, ui
     const Rigid3d step = gt[i].inverse() * gt[i + 1];
     const double scale =
         (1.0 + scale_drift * static_cast<double>(i) / n) * (1.0 + step_noise * uniform());
-    const Eigen::Matrix3d noise =
-        (Eigen::AngleAxisd(rotation_noise_rad * uniform(), Eigen::Vector3d::UnitX()) *
-         Eigen::AngleAxisd(rotation_noise_rad * uniform(), Eigen::Vector3d::UnitY()) *
-         Eigen::AngleAxisd(rotation_noise_rad * uniform(), Eigen::Vector3d::UnitZ()))
-            .toRotationMatrix();
+    // One draw a statement: the order of an expression's operands is the compiler's, and the
+    // devkit's numbers in kitti_odometry_metric_test.cc were computed in this order.
+    const double about_z = rotation_noise_rad * uniform();
+    const double about_y = rotation_noise_rad * uniform();
+    const double about_x = rotation_noise_rad * uniform();
+    const Eigen::Matrix3d noise = (Eigen::AngleAxisd(about_x, Eigen::Vector3d::UnitX()) *
+                                   Eigen::AngleAxisd(about_y, Eigen::Vector3d::UnitY()) *
+                                   Eigen::AngleAxisd(about_z, Eigen::Vector3d::UnitZ()))
+                                      .toRotationMatrix();
     // KITTI's rotation blocks are orthonormal only to their 7 printed digits; chaining 2,000
     // such products would let the estimate's rotations drift away from orthonormal.
     est.push_back(est.back() *

@@ -82,13 +82,22 @@ inline TwoViewScene MakeTwoViewScene(const PinholeCamera& camera, const Eigen::M
   std::normal_distribution<double> noise(0.0, noise_px);
   TwoViewScene scene;
   while (static_cast<int>(scene.correspondences.size()) < count) {
-    const Eigen::Vector3d X(ux(rng), uy(rng), uz(rng));
+    // One draw a statement: the order of a call's arguments is the compiler's, and the scene
+    // must be the same with every compiler.
+    const double z = uz(rng);
+    const double y = uy(rng);
+    const double x = ux(rng);
+    const Eigen::Vector3d X(x, y, z);
     const Eigen::Vector3d Y = R * X + t;
     if (Y.z() < 1.0) continue;
     Correspondence c;
     c.track_id = static_cast<int64_t>(scene.correspondences.size()) * 3 + 1;
-    c.prev = camera.Project(X) + Eigen::Vector2d(noise(rng), noise(rng));
-    c.cur = camera.Project(Y) + Eigen::Vector2d(noise(rng), noise(rng));
+    const double prev_dy = noise(rng);
+    const double prev_dx = noise(rng);
+    const double cur_dy = noise(rng);
+    const double cur_dx = noise(rng);
+    c.prev = camera.Project(X) + Eigen::Vector2d(prev_dx, prev_dy);
+    c.cur = camera.Project(Y) + Eigen::Vector2d(cur_dx, cur_dy);
     if (!camera.IsInside(c.prev) || !camera.IsInside(c.cur)) continue;
     const bool outlier = unit(rng) < outlier_ratio;
     if (outlier) {

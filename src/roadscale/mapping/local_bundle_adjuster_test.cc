@@ -14,7 +14,8 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
 }
 
 // Pixel noise on every observation, and a share of the observations replaced by wrong
-// pixels (tracks that slipped).
+// pixels (tracks that slipped). One draw a statement here and below: the order of a call's
+// arguments is the compiler's, and the test must be the same with every compiler.
 void Corrupt(LocalWindow* window, double noise_px, double outlier_share, uint32_t seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, noise_px);
@@ -22,12 +23,23 @@ void Corrupt(LocalWindow* window, double noise_px, double outlier_share, uint32_
   for (Keyframe& keyframe : window->keyframes()) {
     for (auto& [id, pixel] : keyframe.observations) {
       if (unit(rng) < outlier_share) {
-        pixel += Eigen::Vector2d(20.0 + 30.0 * unit(rng), -20.0 - 30.0 * unit(rng));
+        const double dy = -20.0 - 30.0 * unit(rng);
+        const double dx = 20.0 + 30.0 * unit(rng);
+        pixel += Eigen::Vector2d(dx, dy);
       } else {
-        pixel += Eigen::Vector2d(noise(rng), noise(rng));
+        const double dy = noise(rng);
+        const double dx = noise(rng);
+        pixel += Eigen::Vector2d(dx, dy);
       }
     }
   }
+}
+
+Eigen::Vector3d RandomVector(std::uniform_real_distribution<double>& unit, std::mt19937& rng) {
+  const double z = unit(rng);
+  const double y = unit(rng);
+  const double x = unit(rng);
+  return {x, y, z};
 }
 
 // Moves the keyframes from `first_moved` on by up to `pose_noise` metres and 0.3 deg, and
@@ -37,9 +49,9 @@ void Perturb(LocalWindow* window, size_t first_moved, double pose_noise, uint32_
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (size_t k = first_moved; k < window->keyframes().size(); ++k) {
     Rigid3d& pose = window->keyframes()[k].cam_from_world;
-    const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    const Eigen::Vector3d axis = RandomVector(unit, rng).normalized();
     pose = MakeRigid3d(Eigen::AngleAxisd(0.3 * M_PI / 180.0, axis).toRotationMatrix(),
-                       pose_noise * Eigen::Vector3d(unit(rng), unit(rng), unit(rng))) *
+                       pose_noise * RandomVector(unit, rng)) *
            pose;
   }
   for (auto& [id, landmark] : window->landmarks()) {

@@ -20,8 +20,12 @@ MappingTestScene MappingTestScene::Street(int frames, double step_m, double yaw_
   // Facades on both sides, from the road up to 8 m above it.
   for (int i = 0; i < static_cast<int>(length * 12); ++i) {
     const double side = unit(rng) < 0.5 ? -1.0 : 1.0;
-    scene.points.emplace_back(side * (7.0 + unit(rng)), scene.camera_height - 8.0 * unit(rng),
-                              2.0 + length * unit(rng));
+    // One draw a statement: the order of a call's arguments is the compiler's, and the
+    // scene must be the same with every compiler.
+    const double z = 2.0 + length * unit(rng);
+    const double y = scene.camera_height - 8.0 * unit(rng);
+    const double x = side * (7.0 + unit(rng));
+    scene.points.emplace_back(x, y, z);
     scene.is_road.push_back(false);
   }
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -46,7 +50,11 @@ std::vector<TrackObservation> MappingTestScene::Observe(int frame, double noise_
     if (point_cam.z() < 1.0 || point_cam.z() > 60.0) continue;
     Eigen::Vector2d pixel = camera.Project(point_cam);
     if (!camera.IsInside(pixel)) continue;
-    if (noise_px > 0.0) pixel += Eigen::Vector2d(noise(rng), noise(rng));
+    if (noise_px > 0.0) {
+      const double dy = noise(rng);
+      const double dx = noise(rng);
+      pixel += Eigen::Vector2d(dx, dy);
+    }
     observations.push_back({static_cast<int64_t>(id), pixel});
   }
   return observations;

@@ -47,7 +47,8 @@ TEST(Delaunay, RandomPointsFollowEulerAndEmptyCircle) {
   std::vector<Eigen::Vector2d> points;
   std::vector<cv::Point2f> cv_points;
   for (int i = 0; i < 300; ++i) {
-    points.emplace_back(x(generator), y(generator));
+    const double row = y(generator);  // one draw a statement: argument order is the compiler's
+    points.emplace_back(x(generator), row);
     cv_points.emplace_back(static_cast<float>(points.back().x()),
                            static_cast<float>(points.back().y()));
   }

@@ -32,8 +32,8 @@ RoadTracks Track(const Plane& road, const Rigid3d& motion, double noise_px, uint
     const Eigen::Vector3d moved = motion * point;
     if (moved.z() <= 0.0) continue;
     const Eigen::Vector2d prev = camera.Project(point);
-    const Eigen::Vector2d cur =
-        camera.Project(moved) + Eigen::Vector2d(noise(generator), noise(generator));
+    const double dy = noise(generator);  // one draw a statement: argument order is the compiler's
+    const Eigen::Vector2d cur = camera.Project(moved) + Eigen::Vector2d(noise(generator), dy);
     if (!camera.IsInside(prev) || !camera.IsInside(cur)) continue;
     tracks.indices.push_back(static_cast<int>(tracks.prev.size()));
     tracks.prev.push_back(prev);

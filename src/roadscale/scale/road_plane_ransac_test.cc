@@ -35,7 +35,12 @@ NoisyRoad MakeNoisyRoad(uint32_t seed) {
   std::uniform_real_distribution<double> x(-8.0, 8.0);
   std::uniform_real_distribution<double> y(-2.0, 1.5);
   std::uniform_real_distribution<double> z(4.0, 25.0);
-  for (int i = 0; i < 100; ++i) scene.points.emplace_back(x(generator), y(generator), z(generator));
+  for (int i = 0; i < 100; ++i) {
+    // One draw a statement: the order of a call's arguments is the compiler's.
+    const double depth = z(generator);
+    const double height = y(generator);
+    scene.points.emplace_back(x(generator), height, depth);
+  }
   const Plane wall{Eigen::Vector3d::UnitX(), 6.5};
   for (const auto& point : testing::PointsOnPlane(wall, 100, -2.0, 1.6, 5, 25, seed + 2)) {
     scene.points.push_back(point);

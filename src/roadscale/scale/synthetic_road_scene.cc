@@ -30,7 +30,11 @@ std::vector<Eigen::Vector3d> PointsOnPlane(const Plane& plane, int count, double
   std::vector<Eigen::Vector3d> points;
   points.reserve(count);
   for (int i = 0; i < count; ++i) {
-    points.push_back(foot + lateral(generator) * across + depth(generator) * along);
+    // One draw a statement here and below: the order of an expression's operands is the
+    // compiler's, and a seed must give the same scene with every compiler.
+    const double ahead = depth(generator);
+    const double aside = lateral(generator);
+    points.push_back(foot + aside * across + ahead * along);
   }
   return points;
 }
@@ -51,9 +55,9 @@ std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
   // Walls 8 m to either side, from the road up to 6 m.
   for (int i = 0; i < options.num_wall; ++i) {
     const double side = i % 2 == 0 ? -8.0 : 8.0;
-    scene.push_back(
-        {foot + side * across + (6.0 + 44.0 * unit(generator)) * along + 6.0 * unit(generator) * up,
-         SceneLabel::kWall});
+    const double height = 6.0 * unit(generator);
+    const double ahead = 6.0 + 44.0 * unit(generator);
+    scene.push_back({foot + side * across + ahead * along + height * up, SceneLabel::kWall});
   }
   // A parked car: a 1.8 m x 1.5 m x 4.5 m box on the road, 2.5 m to the right, 9 m ahead;
   // points on its rear face, its left side and its roof.
@@ -96,8 +100,12 @@ TwoViewObservations ObserveTwoViews(const std::vector<ScenePoint>& scene,
     Eigen::Vector2d prev = camera.Project(scene_point.point);
     Eigen::Vector2d cur = camera.Project(in_cur);
     if (noise_px > 0.0) {
-      prev += noise_px * Eigen::Vector2d(noise(generator), noise(generator));
-      cur += noise_px * Eigen::Vector2d(noise(generator), noise(generator));
+      const double prev_dy = noise(generator);
+      const double prev_dx = noise(generator);
+      const double cur_dy = noise(generator);
+      const double cur_dx = noise(generator);
+      prev += noise_px * Eigen::Vector2d(prev_dx, prev_dy);
+      cur += noise_px * Eigen::Vector2d(cur_dx, cur_dy);
     }
     if (!camera.IsInside(prev) || !camera.IsInside(cur)) continue;
     observations.prev_pixels.push_back(prev);

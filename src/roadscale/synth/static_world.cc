@@ -366,7 +366,9 @@ class WorldBuilder {
           if (!rng.Bernoulli(scenery.tree_probability)) continue;
           const RoadFrame frame = line_.FrameAt(u);
           const double l = side * offset;
-          AddTreeAt(u, l, Ground(frame, l), rng.Uniform(6.0, 11.0), rng.Uniform(1.8, 3.0), rng);
+          const double crown_radius = rng.Uniform(1.8, 3.0);  // one draw a statement (traffic.cc)
+          const double height = rng.Uniform(6.0, 11.0);
+          AddTreeAt(u, l, Ground(frame, l), height, crown_radius, rng);
         }
       }
     }

@@ -27,7 +27,11 @@ Traffic::Traffic(const SceneOptions& options, const CentreLine& line, const Late
     Car car;
     car.kind = kind;
     car.shape = RandomCarShape(rng);
-    car.mesh = MakeCar(car.shape, RandomCarPaint(rng), static_cast<uint32_t>(rng.NextU64()));
+    // One draw a statement: the order of a call's arguments is the compiler's, and a seed
+    // must give the same scene with every compiler.
+    const auto variant = static_cast<uint32_t>(rng.NextU64());
+    const Rgb paint = RandomCarPaint(rng);
+    car.mesh = MakeCar(car.shape, paint, variant);
     return car;
   };
   const double span = u_end - u_begin;
@@ -91,8 +95,11 @@ Traffic::Traffic(const SceneOptions& options, const CentreLine& line, const Late
       const double edge = side > 0 ? layout.left_edge : layout.right_edge;
       walker.l = edge + side * rng.Uniform(0.8, options.road.sidewalk_width - 0.4);
       walker.u0 = rng.Uniform(u_begin, u_end);
-      walker.speed =
-          rng.Bernoulli(0.75) ? rng.Uniform(0.9, 1.6) * (rng.Bernoulli(0.5) ? 1 : -1) : 0.0;
+      walker.speed = 0.0;
+      if (rng.Bernoulli(0.75)) {
+        const double pace = rng.Uniform(0.9, 1.6);
+        walker.speed = rng.Bernoulli(0.5) ? pace : -pace;
+      }
       walker.height = rng.Uniform(1.55, 1.9);
       walker.clothes = kClothes[rng.UniformInt(0, 5)];
       walker.variant = static_cast<uint32_t>(rng.NextU64());
