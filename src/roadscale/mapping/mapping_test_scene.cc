@@ -12,16 +12,17 @@ MappingTestScene MappingTestScene::Street(int frames, double step_m, double yaw_
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double length = frames * step_m + 40.0;
   // Road: a textured lane and its neighbours.
+  // One draw a statement here and below: the order of a call's arguments is the compiler's,
+  // and the scene must be the same with every compiler.
   for (int i = 0; i < static_cast<int>(length * 12); ++i) {
-    scene.points.emplace_back(-5.0 + 10.0 * unit(rng), scene.camera_height,
-                              2.0 + length * unit(rng));
+    const double z = 2.0 + length * unit(rng);
+    const double x = -5.0 + 10.0 * unit(rng);
+    scene.points.emplace_back(x, scene.camera_height, z);
     scene.is_road.push_back(true);
   }
   // Facades on both sides, from the road up to 8 m above it.
   for (int i = 0; i < static_cast<int>(length * 12); ++i) {
     const double side = unit(rng) < 0.5 ? -1.0 : 1.0;
-    // One draw a statement: the order of a call's arguments is the compiler's, and the
-    // scene must be the same with every compiler.
     const double z = 2.0 + length * unit(rng);
     const double y = scene.camera_height - 8.0 * unit(rng);
     const double x = side * (7.0 + unit(rng));

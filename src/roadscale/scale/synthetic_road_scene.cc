@@ -80,10 +80,11 @@ std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
   }
   // Trees and buildings above the camera, far ahead.
   for (int i = 0; i < options.num_above_horizon; ++i) {
-    scene.push_back({foot + (-15.0 + 30.0 * unit(generator)) * across +
-                         (20.0 + 60.0 * unit(generator)) * along +
-                         (options.road.height + 1.0 + 8.0 * unit(generator)) * up,
-                     SceneLabel::kAboveHorizon});
+    const double height = options.road.height + 1.0 + 8.0 * unit(generator);
+    const double ahead = 20.0 + 60.0 * unit(generator);
+    const double aside = -15.0 + 30.0 * unit(generator);
+    scene.push_back(
+        {foot + aside * across + ahead * along + height * up, SceneLabel::kAboveHorizon});
   }
   return scene;
 }

@@ -67,8 +67,9 @@ VehicleMotion::VehicleMotion(const VehicleOptions& options, double duration, Rng
     const double end = position_.back() + 100.0;
     double u = options.start_position + rng.Uniform(0.0, 1000.0 / options.bumps_per_km);
     while (u < end) {
-      bumps_.push_back({u, options.bump_pitch_deg * kDegToRad * rng.Uniform(0.5, 1.0) *
-                               (rng.Bernoulli(0.5) ? 1.0 : -1.0)});
+      // One draw a statement (traffic.cc).
+      const double amplitude = options.bump_pitch_deg * kDegToRad * rng.Uniform(0.5, 1.0);
+      bumps_.push_back({u, rng.Bernoulli(0.5) ? amplitude : -amplitude});
       u += rng.Uniform(0.3, 1.7) * 1000.0 / options.bumps_per_km;
     }
   }
