@@ -32,6 +32,13 @@ void CheckDynamicMask(const cv::Mat& mask, const cv::Size& size, int frame_index
   }
 }
 
+// Tracks followed over at least two frames: the ones with a correspondence.
+int CountTracked(const std::vector<roadscale::Track>& tracks) {
+  return static_cast<int>(
+      std::count_if(tracks.begin(), tracks.end(),
+                    [](const roadscale::Track& track) { return track.length() >= 2; }));
+}
+
 cv::Point2f ToCv(const Eigen::Vector2d& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y())};
 }
@@ -123,9 +130,7 @@ void FeatureTracker::DropOnMask(const cv::Mat& dynamic_mask) {
     stats_.dropped_dynamic += static_cast<int>(before - tracks_.size());
     stats_.tracking_ms += MillisecondsSince(start);
   }
-  stats_.tracked = static_cast<int>(
-      std::count_if(tracks_.begin(), tracks_.end(),
-                    [](const roadscale::Track& track) { return track.length() >= 2; }));
+  stats_.tracked = CountTracked(tracks_);
 }
 
 std::vector<int64_t> FeatureTracker::DropOnMaskAt(int frame_index, const cv::Mat& dynamic_mask) {
@@ -143,9 +148,7 @@ std::vector<int64_t> FeatureTracker::DropOnMaskAt(int frame_index, const cv::Mat
   };
   tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(), on_mask), tracks_.end());
   stats_.dropped_dynamic += static_cast<int>(dropped.size());
-  stats_.tracked = static_cast<int>(
-      std::count_if(tracks_.begin(), tracks_.end(),
-                    [](const roadscale::Track& track) { return track.length() >= 2; }));
+  stats_.tracked = CountTracked(tracks_);
   return dropped;
 }
 

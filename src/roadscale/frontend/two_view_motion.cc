@@ -9,6 +9,7 @@
 #include <opencv2/core/eigen.hpp>
 
 #include "roadscale/util/error.h"
+#include "roadscale/util/median.h"
 
 #include <Eigen/SVD>
 
@@ -17,13 +18,6 @@ namespace {
 
 // Refine / re-select rounds; the inlier set usually stops changing after two or three.
 constexpr int kMaxRefinementRounds = 5;
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  return values[mid];
-}
 
 // The rotation that best maps the bearings `from` onto `to` (least squares, Kabsch).
 Eigen::Matrix3d FitRotation(const std::vector<Eigen::Vector3d>& from,

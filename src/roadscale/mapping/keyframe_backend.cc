@@ -12,6 +12,7 @@
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane_ransac.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/median.h"
 
 namespace roadscale {
 namespace {
@@ -311,7 +312,7 @@ void KeyframeBackend::ScaleMapOnFirstRoad() {
   heights.erase(std::remove_if(heights.begin(), heights.end(), [](double h) { return !(h > 0.0); }),
                 heights.end());
   if (heights.empty()) return;
-  const double factor = camera_height_ / MedianOf(heights);
+  const double factor = camera_height_ / Median(heights);
   window_.Rescale(factor);
   for (PendingFrame& frame : pending_) {
     frame.keyframe_from_cam.translation() *= factor;

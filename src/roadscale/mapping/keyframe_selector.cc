@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "roadscale/util/error.h"
+#include "roadscale/util/median.h"
 
 namespace roadscale {
 
@@ -45,11 +46,7 @@ KeyframeMotion MeasureKeyframeMotion(const Keyframe& keyframe, int frame_index,
     motion.tracked_share =
         static_cast<double>(parallax.size()) / static_cast<double>(keyframe.observations.size());
   }
-  if (!parallax.empty()) {
-    const auto middle = parallax.begin() + static_cast<long>(parallax.size() / 2);
-    std::nth_element(parallax.begin(), middle, parallax.end());
-    motion.parallax_px = *middle;
-  }
+  if (!parallax.empty()) motion.parallax_px = Median(std::move(parallax));
   return motion;
 }
 

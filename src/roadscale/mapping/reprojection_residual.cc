@@ -3,17 +3,13 @@
 #include <cmath>
 #include <limits>
 
+#include "roadscale/geometry/rigid3.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 namespace roadscale {
 namespace {
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
-}
 
 // R(w) p for the angle-axis w, with its derivatives by w and by p. The value repeats
 // ceres::AngleAxisRotatePoint operation for operation (so the residuals are those Ceres'
@@ -36,7 +32,7 @@ void RotatePoint(const double* w, const double* p, Eigen::Vector3d* rotated,
       (*rotated)[i] = p[i] * costheta + axis_cross_point[i] * sintheta + axis[i] * tmp;
     }
     const Eigen::Vector3d unit(axis[0], axis[1], axis[2]);
-    const Eigen::Matrix3d unit_skew = Skew(unit);
+    const Eigen::Matrix3d unit_skew = SkewMatrix(unit);
     if (by_point != nullptr) {
       *by_point = costheta * Eigen::Matrix3d::Identity() + sintheta * unit_skew +
                   (1.0 - costheta) * unit * unit.transpose();
@@ -49,7 +45,7 @@ void RotatePoint(const double* w, const double* p, Eigen::Vector3d* rotated,
       const double a = (1.0 - costheta) * theta_inverse;
       const double b = 1.0 - sintheta * theta_inverse;
       const double q_dot_u = q.dot(unit);
-      *by_rotation = -Skew(q) - a * (unit * q.transpose()) -
+      *by_rotation = -SkewMatrix(q) - a * (unit * q.transpose()) -
                      b * (unit * q.cross(unit).transpose()) +
                      (a * q_dot_u) * Eigen::Matrix3d::Identity() + (b * q_dot_u) * unit_skew;
     }
@@ -59,9 +55,9 @@ void RotatePoint(const double* w, const double* p, Eigen::Vector3d* rotated,
                                      w[0] * p[1] - w[1] * p[0]};
     for (int i = 0; i < 3; ++i) (*rotated)[i] = p[i] + w_cross_point[i];
     if (by_point != nullptr) {
-      *by_point = Eigen::Matrix3d::Identity() + Skew(Eigen::Vector3d(w[0], w[1], w[2]));
+      *by_point = Eigen::Matrix3d::Identity() + SkewMatrix(Eigen::Vector3d(w[0], w[1], w[2]));
     }
-    if (by_rotation != nullptr) *by_rotation = -Skew(Eigen::Vector3d(p[0], p[1], p[2]));
+    if (by_rotation != nullptr) *by_rotation = -SkewMatrix(Eigen::Vector3d(p[0], p[1], p[2]));
   }
 }
 

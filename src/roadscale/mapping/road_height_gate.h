@@ -8,9 +8,6 @@ namespace roadscale {
 // with them: fewer say nothing about the map's scale.
 constexpr int kMinRoadLandmarksToCompare = 3;
 
-// The median of `values` (the upper one of an even count); 0 for none.
-double MedianOf(std::vector<double> values);
-
 // Whether a keyframe pair's road points, at `pair_heights` under their anchor (map units),
 // agree with the window's road landmarks at `window_heights`: their medians within a factor
 // `max_ratio` (> 1) of each other. With fewer than kMinRoadLandmarksToCompare window heights

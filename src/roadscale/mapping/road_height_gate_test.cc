@@ -5,12 +5,6 @@
 namespace roadscale {
 namespace {
 
-TEST(RoadHeightGate, MedianOfOddEvenAndNone) {
-  EXPECT_DOUBLE_EQ(MedianOf({3.0, 1.0, 2.0}), 2.0);
-  EXPECT_DOUBLE_EQ(MedianOf({4.0, 1.0, 3.0, 2.0}), 3.0);
-  EXPECT_DOUBLE_EQ(MedianOf({}), 0.0);
-}
-
 TEST(RoadHeightGate, AcceptsThePlaneOfTheMapAndRejectsOneAtEightTimesItsHeight) {
   const std::vector<double> window = {1.64, 1.66, 1.65, 1.63, 1.67, 1.65, 1.66, 1.64};
   EXPECT_TRUE(RoadHeightsAgree({1.55, 1.58, 1.52}, window, 1.5));

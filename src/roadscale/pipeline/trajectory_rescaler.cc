@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "roadscale/util/error.h"
+#include "roadscale/util/median.h"
 
 #include <Eigen/Geometry>
 
@@ -25,19 +26,6 @@ double MillisecondsSince(std::chrono::steady_clock::time_point start) {
 // The VO's motion from pose a to pose b, as cur_from_prev.
 Rigid3d StepMotion(const Trajectory& trajectory, size_t b) {
   return trajectory.world_from_cam[b].inverse() * trajectory.world_from_cam[b - 1];
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + middle, values.end());
-  return values[middle];
-}
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
 }
 
 std::string FormatTime(double seconds) {
@@ -321,7 +309,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose) {
     }
   }
 
-  const Eigen::Matrix3d essential = Skew(direction) * rotation;
+  const Eigen::Matrix3d essential = SkewMatrix(direction) * rotation;
   std::vector<Eigen::Vector2d> kept_prev;
   std::vector<Eigen::Vector2d> kept_cur;
   std::vector<int64_t> outliers;
