@@ -84,12 +84,11 @@ class RoadMaskCompleter {
       record.total_ms += served.result.milliseconds;
       road_ = served.result.road_mask;
       cur_from_road_.setIdentity();
-      tracked.road_mask = road_;
+      SetRoadMask(road_, &tracked);
     } else {
       cur_from_road_ = carried.road_step * cur_from_road_;
-      tracked.road_mask = CarryRoadMask(road_, cur_from_road_);
+      SetRoadMask(CarryRoadMask(road_, cur_from_road_), &tracked);
     }
-    if (!tracked.road_mask.empty()) record.road_mask_px = cv::countNonZero(tracked.road_mask);
     return std::move(tracked);
   }
 

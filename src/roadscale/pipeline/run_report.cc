@@ -128,6 +128,9 @@ std::vector<FrameSeries> RunFrameSeries(const RunReportData& data) {
     series.push_back(
         {"window_road_landmarks", FrameSeriesKind::kCount, column("window_road_landmarks")});
     series.push_back({"road_points_marked", FrameSeriesKind::kCount, column("road_points")});
+    series.push_back({"road_tracks", FrameSeriesKind::kCount, per_frame([](const FrameRecord& r) {
+                        return r.road_tracks >= 0 ? r.road_tracks : kNaN;
+                      })});
   }
   if (road) {
     series.push_back({"points_triangulated", FrameSeriesKind::kCount, column("road_triangulated")});

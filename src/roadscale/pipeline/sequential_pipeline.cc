@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -66,7 +67,7 @@ void PipelineOptions::Check() const {
 
 std::string FrameRecordCsvHeader() {
   return "index,timestamp,motion_status,pose_update,tracks,correspondences,inliers,detected,"
-         "dropped_dynamic,road_mask_px,inlier_ratio,flow_px,parallax_px,scale_valid,"
+         "dropped_dynamic,road_mask_px,road_tracks,inlier_ratio,flow_px,parallax_px,scale_valid,"
          "step_length_m,scale_status,status,load_ms,segmentation_ms,tracking_ms,detection_ms,"
          "motion_ms,scale_ms,total_ms,segmented,segmentation_cpu_ms,frontend_cpu_ms,scale_cpu_ms";
 }
@@ -77,13 +78,29 @@ std::string FormatFrameRecordCsv(const FrameRecord& r) {
       << MotionStatusName(r.motion_status) << ',' << PoseUpdateName(r.pose_update) << ','
       << r.num_tracks << ',' << r.num_correspondences << ',' << r.num_inliers << ','
       << r.num_detected << ',' << r.num_dropped_dynamic << ',' << r.road_mask_px << ','
-      << r.inlier_ratio << ',' << r.flow_px << ',' << r.parallax_px << ','
+      << r.road_tracks << ',' << r.inlier_ratio << ',' << r.flow_px << ',' << r.parallax_px << ','
       << (r.scale_valid ? 1 : 0) << ',' << std::setprecision(9) << r.step_length_m << ','
       << std::setprecision(6) << '"' << r.scale_status << '"' << ',' << r.status << ',' << r.load_ms
       << ',' << r.segmentation_ms << ',' << r.tracking_ms << ',' << r.detection_ms << ','
       << r.motion_ms << ',' << r.scale_ms << ',' << r.total_ms << ',' << (r.segmented ? 1 : 0)
       << ',' << r.segmentation_cpu_ms << ',' << r.frontend_cpu_ms << ',' << r.scale_cpu_ms;
   return out.str();
+}
+
+void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked) {
+  tracked->road_mask = road_mask;
+  if (road_mask.empty()) return;
+  tracked->record.road_mask_px = cv::countNonZero(road_mask);
+  int on_road = 0;
+  for (const TrackObservation& observation : tracked->frontend.observations) {
+    const int x = static_cast<int>(std::lround(observation.pixel.x()));
+    const int y = static_cast<int>(std::lround(observation.pixel.y()));
+    if (x >= 0 && y >= 0 && x < road_mask.cols && y < road_mask.rows &&
+        road_mask.at<unsigned char>(y, x) != 0) {
+      ++on_road;
+    }
+  }
+  tracked->record.road_tracks = on_road;
 }
 
 SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& scale,
@@ -128,10 +145,7 @@ TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
   record.segmentation_cpu_ms = input.segmentation_cpu_ms;
   record.segmented = segmentation.fresh && segmentation.HasLabels();
   record.total_ms += segmentation.milliseconds;
-  if (!segmentation.road_mask.empty()) {
-    record.road_mask_px = cv::countNonZero(segmentation.road_mask);
-    tracked.road_mask = segmentation.road_mask;
-  }
+  SetRoadMask(segmentation.road_mask, &tracked);
   return tracked;
 }
 

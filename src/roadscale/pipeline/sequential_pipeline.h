@@ -54,6 +54,9 @@ struct FrameRecord {
   int num_detected = 0;         // new tracks started in this frame
   int num_dropped_dynamic = 0;  // tracks that landed on the dynamic mask
   int road_mask_px = -1;        // road pixels of this frame's mask; -1 without one
+  // Live tracks on that mask after detection (-1 without one): the road points a keyframe
+  // pair can select from.
+  int road_tracks = -1;
   double inlier_ratio = 0.0;
   double flow_px = 0.0;
   double parallax_px = 0.0;
@@ -112,6 +115,10 @@ struct TrackedFrame {
   FrontendFrame frontend;
   cv::Mat road_mask;  // this frame's road mask, for the next frame's scale query
 };
+
+// Gives `tracked` its road mask (empty: none) and records its road pixels and the live
+// tracks on it.
+void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked);
 
 // The per-frame logic of the system, for each frame: frontend (features outside the static
 // mask, tracks landing on moving objects dropped) -> two-view motion -> scale source (with

@@ -20,6 +20,27 @@ TEST(SequentialPipeline, FrameRecordCsvHasOneFieldPerHeaderColumn) {
   EXPECT_EQ(count(FrameRecordCsvHeader()), count(FormatFrameRecordCsv(record)));
 }
 
+TEST(SequentialPipeline, RecordsTheRoadPixelsAndTheTracksOnTheRoad) {
+  TrackedFrame tracked;
+  // Road: the bottom half of a 20 x 10 image.
+  cv::Mat road(10, 20, CV_8UC1, cv::Scalar(0));
+  road.rowRange(5, 10).setTo(255);
+  tracked.frontend.observations = {{1, {3.0, 7.2}},    // on the road
+                                   {2, {15.0, 4.6}},   // rounds to row 5: on the road
+                                   {3, {8.0, 2.0}},    // above it
+                                   {4, {25.0, 8.0}}};  // outside the image
+  SetRoadMask(road, &tracked);
+  EXPECT_EQ(tracked.record.road_mask_px, 100);
+  EXPECT_EQ(tracked.record.road_tracks, 2);
+  EXPECT_EQ(tracked.road_mask.data, road.data);
+
+  TrackedFrame without;
+  without.frontend.observations = tracked.frontend.observations;
+  SetRoadMask(cv::Mat(), &without);
+  EXPECT_EQ(without.record.road_mask_px, -1);
+  EXPECT_EQ(without.record.road_tracks, -1);
+}
+
 TEST(SequentialPipeline, RejectsAnOutputFolderThatCannotBeCreated) {
   testing::TempDir dir;
   const std::string blocker = testing::WriteTextFile(dir.File("file"), "x");
