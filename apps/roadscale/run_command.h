@@ -1,28 +1,16 @@
 #pragma once
 
-#include <optional>
 #include <string>
+
+#include "roadscale/pipeline/run_request.h"
 
 namespace roadscale::cli {
 
-// The options of `roadscale run` (see RegisterRunCommand for their meaning); `roadscale demo`
-// fills them in for the sequence it renders.
-struct RunArguments {
-  std::string kitti;
-  std::string images;
-  std::string video;
-  std::string camera;
-  std::string config;
-  std::string model;
-  std::string labels;
-  bool no_segmentation = false;
-  std::optional<std::string> scale;
-  std::optional<std::string> detector;
-  std::optional<double> h0;
-  std::string frames;
+// The options of `roadscale run`: the run's request, its output folder and the report's
+// title (default from the input); `roadscale demo` fills them in for the sequence it renders.
+struct RunArguments : RunRequest {
   std::string out;
-  bool sequential = false;
-  std::string title;  // the report's title; default from the input
+  std::string title;
 };
 
 // Runs the pipeline as `roadscale run` does and prints where the outputs are. Throws Error on

@@ -50,21 +50,21 @@ std::string FormatH0(double h0) {
 
 }  // namespace
 
-std::vector<std::string> RunArguments(const BatchDrive& drive, const std::string& out_dir) {
+std::vector<std::string> RunArguments(const RunRequest& run, const std::string& out_dir) {
   std::vector<std::string> arguments = {"run"};
-  AddOption(&arguments, "--kitti", drive.kitti);
-  AddOption(&arguments, "--images", drive.images);
-  AddOption(&arguments, "--video", drive.video);
-  AddOption(&arguments, "--camera", drive.camera);
-  AddOption(&arguments, "--config", drive.config);
-  AddOption(&arguments, "--model", drive.model);
-  AddOption(&arguments, "--labels", drive.labels);
-  if (drive.no_segmentation) arguments.push_back("--no-segmentation");
-  AddOption(&arguments, "--scale", drive.scale);
-  AddOption(&arguments, "--detector", drive.detector);
-  if (drive.h0) AddOption(&arguments, "--h0", FormatH0(*drive.h0));
-  AddOption(&arguments, "--frames", drive.frames);
-  if (drive.sequential) arguments.push_back("--sequential");
+  AddOption(&arguments, "--kitti", run.kitti);
+  AddOption(&arguments, "--images", run.images);
+  AddOption(&arguments, "--video", run.video);
+  AddOption(&arguments, "--camera", run.camera);
+  AddOption(&arguments, "--config", run.config);
+  AddOption(&arguments, "--model", run.model);
+  AddOption(&arguments, "--labels", run.labels);
+  if (run.no_segmentation) arguments.push_back("--no-segmentation");
+  if (run.scale) AddOption(&arguments, "--scale", *run.scale);
+  if (run.detector) AddOption(&arguments, "--detector", *run.detector);
+  if (run.h0) AddOption(&arguments, "--h0", FormatH0(*run.h0));
+  AddOption(&arguments, "--frames", run.frames);
+  if (run.sequential) arguments.push_back("--sequential");
   AddOption(&arguments, "--out", out_dir);
   return arguments;
 }

@@ -7,9 +7,9 @@
 
 namespace roadscale::batch {
 
-// `roadscale run`'s arguments for the drive (without the program name): "run", then its
+// `roadscale run`'s arguments for a drive's run (without the program name): "run", then its
 // options in a fixed order, then "--out" `out_dir`. Running them is the drive.
-std::vector<std::string> RunArguments(const BatchDrive& drive, const std::string& out_dir);
+std::vector<std::string> RunArguments(const RunRequest& run, const std::string& out_dir);
 
 // What decides a drive's outputs, as 16 hex digits (64-bit FNV-1a): its run arguments
 // without --out (so a batch folder can be moved) and the contents of its config, camera and

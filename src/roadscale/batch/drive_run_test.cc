@@ -24,6 +24,30 @@ TEST(RunArgumentsTest, RunsOptionsInAFixedOrderThenOut) {
                           "--frames", "0:20", "--out", "/out/a"));
 }
 
+TEST(RunArgumentsTest, PassesEveryOptionOfTheRun) {
+  RunRequest run;
+  run.images = "/data/frames";
+  run.camera = "/data/cam.yaml";
+  run.config = "/data/run.yaml";
+  run.model = "/data/model.yaml";
+  run.scale = "oracle";
+  run.detector = "orb";
+  run.h0 = 1.5;
+  run.frames = "5:";
+  run.sequential = true;
+  EXPECT_THAT(RunArguments(run, "/out/b"),
+              ElementsAre("run", "--images", "/data/frames", "--camera", "/data/cam.yaml",
+                          "--config", "/data/run.yaml", "--model", "/data/model.yaml", "--scale",
+                          "oracle", "--detector", "orb", "--h0", "1.5", "--frames",
+                          "5:", "--sequential", "--out", "/out/b"));
+  RunRequest other;
+  other.video = "/data/drive.mp4";
+  other.labels = "/data/labels";
+  EXPECT_THAT(RunArguments(other, "/out/c"),
+              ElementsAre("run", "--video", "/data/drive.mp4", "--labels", "/data/labels", "--out",
+                          "/out/c"));
+}
+
 TEST(DriveFingerprintTest, ChangesWithArgumentsAndConfigContentsButNotTheOutputFolder) {
   TempDir dir;
   BatchDrive drive;

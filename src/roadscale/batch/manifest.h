@@ -1,29 +1,16 @@
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "roadscale/pipeline/run_request.h"
+
 namespace roadscale::batch {
 
-// One drive of a batch: its name (the folder DIR/<name>/ of its outputs) and the options
-// `roadscale run` takes, with every path absolute. Empty strings and unset optionals mean
-// "not given", as on run's command line.
-struct BatchDrive {
+// One drive of a batch: the run `roadscale run` makes of it, with every path absolute, and
+// its name (the folder DIR/<name>/ of its outputs).
+struct BatchDrive : RunRequest {
   std::string name;
-  std::string kitti;
-  std::string images;
-  std::string video;
-  std::string camera;
-  std::string config;
-  std::string model;
-  std::string labels;
-  bool no_segmentation = false;
-  std::string scale;
-  std::string detector;
-  std::optional<double> h0;
-  std::string frames;
-  bool sequential = false;
 };
 
 // The drives of a batch, in the order given.
