@@ -1,5 +1,3 @@
-#include <cstdio>
-#include <cstdlib>
 #include "roadscale/mapping/keyframe_backend.h"
 
 #include <algorithm>
@@ -223,13 +221,6 @@ int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
   if (!(baseline > 0.0)) return 0;
   const ScaleEstimate estimate =
       selection_.Estimate(prev_pixels, cur_pixels, cur_from_prev, prev.road_mask);
-  if (std::getenv("RS_DEBUG_SEL")) {
-    std::fprintf(stderr, "SEL %d %zu tri %d behind %d smallpar %d reproj %d pre %d vote %d model %d ransac %d st %d\n",
-                 cur.frame_index, ids.size(), estimate.num_triangulated, estimate.num_behind_camera,
-                 estimate.num_small_parallax, estimate.num_large_reprojection_error,
-                 estimate.num_preselected, estimate.num_after_vote, estimate.num_after_road_model,
-                 estimate.num_ransac_inliers, static_cast<int>(estimate.status));
-  }
   std::vector<int64_t> candidates;
   for (int index : estimate.candidate_track_indices) candidates.push_back(ids[index]);
   recent_road_candidates_.push_back(std::move(candidates));
@@ -294,15 +285,7 @@ int KeyframeBackend::MarkRoad(const std::vector<int64_t>& landmark_ids, const Ke
   // selection let through. A few such points agree with each other and would pull the whole
   // window to their scale, which the robust loss cannot stop when they are nearly as many as
   // the true road points.
-  if (std::getenv("RS_GATE")) {
-    const int k = std::atoi(std::getenv("RS_GATE"));
-    const std::vector<double> reference(recent_pair_heights_.begin(), recent_pair_heights_.end());
-    recent_pair_heights_.push_back(Median(heights));
-    while (static_cast<int>(recent_pair_heights_.size()) > k) recent_pair_heights_.pop_front();
-    if (!RoadHeightsAgree(heights, reference, options_.road_max_height_ratio)) return 0;
-  } else if (!RoadHeightsAgree(heights, RoadLandmarkHeights(), options_.road_max_height_ratio)) {
-    return 0;
-  }
+  if (!RoadHeightsAgree(heights, RoadLandmarkHeights(), options_.road_max_height_ratio)) return 0;
   for (int64_t id : ids) {
     Landmark& landmark = window_.landmarks().at(id);
     landmark.is_road = true;
@@ -331,7 +314,6 @@ void KeyframeBackend::ScaleMapOnFirstRoad() {
   if (heights.empty()) return;
   const double factor = camera_height_ / Median(heights);
   window_.Rescale(factor);
-  for (double& height : recent_pair_heights_) height *= factor;
   for (PendingFrame& frame : pending_) {
     frame.keyframe_from_cam.translation() *= factor;
   }

@@ -144,7 +144,6 @@ class KeyframeBackend {
   std::deque<PendingFrame> pending_;
   // Track ids of the road candidates of the last road_pool_pairs keyframe pairs.
   std::deque<std::vector<int64_t>> recent_road_candidates_;
-  std::deque<double> recent_pair_heights_;
   Rigid3d last_cam_from_world_ = Rigid3d::Identity();
   Rigid3d last_step_ = Rigid3d::Identity();  // cur_from_prev of the last moving frame
   bool has_frame_ = false;
