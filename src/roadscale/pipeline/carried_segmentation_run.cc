@@ -3,7 +3,6 @@
 #include <chrono>
 #include <exception>
 #include <optional>
-#include <thread>
 
 #include <opencv2/core.hpp>
 
@@ -11,6 +10,7 @@
 #include "roadscale/pipeline/frontend_mask_carrier.h"
 #include "roadscale/pipeline/segmentation_schedule.h"
 #include "roadscale/pipeline/segmentation_service.h"
+#include "roadscale/pipeline/stage_thread.h"
 #include "roadscale/segmentation/mask_carrying.h"
 
 namespace roadscale {
@@ -123,52 +123,36 @@ bool RunThreaded(FrameSource& source, CarriedFrontend& frontend, RoadMaskComplet
   // Room for the frames the frontend runs ahead while the scale stage waits for a network.
   BoundedQueue<CarriedFrame> tracked(run_options.queue_capacity +
                                      options.segmentation_schedule.latency_frames);
-  std::exception_ptr load_error, frontend_error, integration_error;
   std::atomic<bool> interrupted{false};
 
-  std::thread load_thread([&] {
-    try {
-      while (true) {
-        if (stop != nullptr && stop->load()) {
-          interrupted = true;
-          break;
+  StageThread load_stage(
+      [&] {
+        while (true) {
+          if (stop != nullptr && stop->load()) {
+            interrupted = true;
+            return;
+          }
+          SegmentedFrame frame;
+          if (!LoadFrame(source, &frame) || !loaded.Push(std::move(frame))) return;
         }
-        SegmentedFrame frame;
-        if (!LoadFrame(source, &frame) || !loaded.Push(std::move(frame))) break;
-      }
-    } catch (...) {
-      load_error = std::current_exception();
-    }
-    loaded.Close();
-  });
-  std::thread frontend_thread([&] {
-    try {
-      while (std::optional<SegmentedFrame> frame = loaded.Pop()) {
-        if (!tracked.Push(frontend.Track(*frame))) break;
-      }
-    } catch (...) {
-      frontend_error = std::current_exception();
-      loaded.Cancel();
-    }
-    tracked.Close();
-  });
-
-  try {
-    while (std::optional<CarriedFrame> frame = tracked.Pop()) {
-      pipeline.Integrate(roads.Complete(std::move(*frame)));
-    }
-  } catch (...) {
-    integration_error = std::current_exception();
-    service.Cancel();
-    tracked.Cancel();
-    loaded.Cancel();
-  }
-  frontend_thread.join();
-  load_thread.join();
-  // The latest stage's error first: it stopped the run at the earliest frame.
-  if (integration_error) std::rethrow_exception(integration_error);
-  if (frontend_error) std::rethrow_exception(frontend_error);
-  if (load_error) std::rethrow_exception(load_error);
+      },
+      [] {}, [&] { loaded.Close(); });
+  const std::unique_ptr<StageThread> frontend_stage = StartQueueStage(
+      loaded, tracked, [&](const SegmentedFrame& frame) { return frontend.Track(frame); });
+  const std::exception_ptr integration_error = RunFinalStage(
+      [&] {
+        while (std::optional<CarriedFrame> frame = tracked.Pop()) {
+          pipeline.Integrate(roads.Complete(std::move(*frame)));
+        }
+      },
+      [&] {
+        service.Cancel();
+        tracked.Cancel();
+        loaded.Cancel();
+      });
+  const std::exception_ptr frontend_error = frontend_stage->Join();
+  const std::exception_ptr load_error = load_stage.Join();
+  RethrowFirstError({integration_error, frontend_error, load_error});
   return interrupted.load();
 }
 

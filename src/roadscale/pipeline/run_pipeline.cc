@@ -2,17 +2,16 @@
 
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <map>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include <opencv2/core/utility.hpp>
 
 #include "roadscale/pipeline/bounded_queue.h"
 #include "roadscale/pipeline/carried_segmentation_run.h"
+#include "roadscale/pipeline/stage_thread.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/util/error.h"
 
@@ -61,9 +60,6 @@ bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
                  const std::atomic<bool>* stop) {
   BoundedQueue<SegmentedFrame> segmented(options.queue_capacity);
   BoundedQueue<TrackedFrame> tracked(options.queue_capacity);
-  std::exception_ptr segmentation_error;
-  std::exception_ptr frontend_error;
-  std::exception_ptr integration_error;
   std::atomic<bool> interrupted{false};
 
   // Stage 1: each worker takes the next frame from the source (in turn), segments it with
@@ -80,80 +76,66 @@ bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
     const std::lock_guard<std::mutex> lock(source_mutex);
     no_more_frames = true;
   };
-  const auto segmentation_worker = [&](Segmenter& segmenter) {
-    try {
-      while (true) {
-        if (stop != nullptr && stop->load()) {
-          interrupted = true;
-          break;
-        }
-        SegmentedFrame frame;
-        size_t sequence = 0;
-        {
-          const std::lock_guard<std::mutex> lock(source_mutex);
-          if (no_more_frames) break;
-          const Clock::time_point start = Clock::now();
-          if (!source.Next(&frame.frame)) {
-            no_more_frames = true;
-            break;
-          }
-          frame.load_ms = MillisecondsSince(start);
-          sequence = frames_taken++;
-        }
-        const double cpu_start = ThreadCpuMs();
-        frame.segmentation = segmenter.Segment(frame.frame.image, FrameName(frame.frame));
-        frame.segmentation_cpu_ms = ThreadCpuMs() - cpu_start;
-        const std::lock_guard<std::mutex> lock(order_mutex);
-        finished.emplace(sequence, std::move(frame));
-        for (auto next = finished.find(next_to_hand_on); next != finished.end();
-             next = finished.find(next_to_hand_on)) {
-          const bool handed_on = segmented.Push(std::move(next->second));
-          finished.erase(next);
-          ++next_to_hand_on;
-          if (!handed_on) {
-            stop_taking_frames();
-            break;
-          }
-        }
+  const auto segment_frames = [&](Segmenter& segmenter) {
+    while (true) {
+      if (stop != nullptr && stop->load()) {
+        interrupted = true;
+        return;
       }
-    } catch (...) {
-      stop_taking_frames();
+      SegmentedFrame frame;
+      size_t sequence = 0;
+      {
+        const std::lock_guard<std::mutex> lock(source_mutex);
+        if (no_more_frames) return;
+        const Clock::time_point start = Clock::now();
+        if (!source.Next(&frame.frame)) {
+          no_more_frames = true;
+          return;
+        }
+        frame.load_ms = MillisecondsSince(start);
+        sequence = frames_taken++;
+      }
+      const double cpu_start = ThreadCpuMs();
+      frame.segmentation = segmenter.Segment(frame.frame.image, FrameName(frame.frame));
+      frame.segmentation_cpu_ms = ThreadCpuMs() - cpu_start;
       const std::lock_guard<std::mutex> lock(order_mutex);
-      if (!segmentation_error) segmentation_error = std::current_exception();
-    }
-    if (--workers_running == 0) segmented.Close();
-  };
-  std::vector<std::thread> segmentation_threads;
-  for (Segmenter* segmenter : segmenters) {
-    segmentation_threads.emplace_back(segmentation_worker, std::ref(*segmenter));
-  }
-  std::thread frontend_thread([&] {
-    try {
-      while (std::optional<SegmentedFrame> frame = segmented.Pop()) {
-        if (!tracked.Push(pipeline.Track(*frame))) break;
+      finished.emplace(sequence, std::move(frame));
+      for (auto next = finished.find(next_to_hand_on); next != finished.end();
+           next = finished.find(next_to_hand_on)) {
+        const bool handed_on = segmented.Push(std::move(next->second));
+        finished.erase(next);
+        ++next_to_hand_on;
+        if (!handed_on) {
+          stop_taking_frames();
+          return;
+        }
       }
-    } catch (...) {
-      frontend_error = std::current_exception();
-      segmented.Cancel();
     }
-    tracked.Close();
-  });
-
-  try {
-    while (std::optional<TrackedFrame> frame = tracked.Pop()) {
-      pipeline.Integrate(std::move(*frame));
-    }
-  } catch (...) {
-    integration_error = std::current_exception();
-    tracked.Cancel();
-    segmented.Cancel();
+  };
+  std::vector<std::unique_ptr<StageThread>> workers;
+  for (Segmenter* segmenter : segmenters) {
+    workers.push_back(std::make_unique<StageThread>([&, segmenter] { segment_frames(*segmenter); },
+                                                    stop_taking_frames,
+                                                    [&] {
+                                                      if (--workers_running == 0) segmented.Close();
+                                                    }));
   }
-  frontend_thread.join();
-  for (std::thread& thread : segmentation_threads) thread.join();
-  // The latest stage's error first: it stopped the run at the earliest frame.
-  if (integration_error) std::rethrow_exception(integration_error);
-  if (frontend_error) std::rethrow_exception(frontend_error);
-  if (segmentation_error) std::rethrow_exception(segmentation_error);
+  const std::unique_ptr<StageThread> frontend_stage = StartQueueStage(
+      segmented, tracked, [&](const SegmentedFrame& frame) { return pipeline.Track(frame); });
+
+  const std::exception_ptr integration_error = RunFinalStage(
+      [&] {
+        while (std::optional<TrackedFrame> frame = tracked.Pop()) {
+          pipeline.Integrate(std::move(*frame));
+        }
+      },
+      [&] {
+        tracked.Cancel();
+        segmented.Cancel();
+      });
+  std::vector<std::exception_ptr> errors = {integration_error, frontend_stage->Join()};
+  for (const std::unique_ptr<StageThread>& worker : workers) errors.push_back(worker->Join());
+  RethrowFirstError(errors);
   return interrupted.load();
 }
 
