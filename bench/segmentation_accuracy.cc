@@ -15,23 +15,17 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include "roadscale/segmentation/cityscapes.h"
 #include "roadscale/segmentation/label_iou.h"
 #include "roadscale/segmentation/onnx_segmenter.h"
 #include "roadscale/util/error.h"
-#include "roadscale/util/shared_data.h"
+
+#include "segmentation_bench_data.h"
 
 namespace roadscale {
 namespace {
 
 const std::vector<std::string> kSizes = {"640x192", "512x256", "1024x320", "1024x512"};
-
-std::string ModelYaml(const std::string& size) {
-  return std::string(ROADSCALE_SOURCE_DIR) + "/config/models/espnetv2_" + size + ".yaml";
-}
 
 std::vector<std::string> SplitCommas(const std::string& text) {
   std::vector<std::string> parts;
@@ -47,32 +41,21 @@ std::vector<std::string> SplitCommas(const std::string& text) {
 }
 
 void LabelledImageIou() {
-  const std::string root = (SharedDataDir() / "kitti_semantics/training").string();
+  const std::vector<LabelledImage> images = ReadLabelledKittiImages();
   std::printf("KITTI semantics, 5 images (IoU; 'all px' counts unlabelled pixels too)\n");
   std::printf("%-9s | %-23s | %-23s | %-23s | %-23s\n", "size", "road colour (all px)",
               "road grey (all px)", "dynamic colour (all px)", "dynamic grey (all px)");
   for (const std::string& size : kSizes) {
-    OnnxSegmenter network(ReadSegmentationModel(ModelYaml(size)), OnnxSegmenter::Options());
+    OnnxSegmenter network(ReadSegmentationModel(ShippedModelYaml(size)), OnnxSegmenter::Options());
     // [colour, grey] x [road, dynamic] x [ignore excluded, all pixels]
     ClassSetIou iou[2][2][2];
-    for (int i = 0; i < 5; ++i) {
-      const std::string name = "00000" + std::to_string(i) + "_10.png";
-      const cv::Mat colour = cv::imread(root + "/image_2/" + name, cv::IMREAD_COLOR);
-      const cv::Mat label_ids = cv::imread(root + "/semantic/" + name, cv::IMREAD_UNCHANGED);
-      if (colour.empty() || label_ids.type() != CV_8UC1) {
-        throw Error(root + ": cannot read image or labels " + name);
-      }
-      cv::Mat truth;
-      cv::LUT(label_ids, CityscapesLabelIdToTrainIdTable(), truth);
-      cv::resize(truth, truth, colour.size(), 0.0, 0.0, cv::INTER_NEAREST);
-      cv::Mat grey;
-      cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
-      const cv::Mat predicted[2] = {network.Labels(colour), network.Labels(grey)};
+    for (const LabelledImage& image : images) {
+      const cv::Mat predicted[2] = {network.Labels(image.colour), network.Labels(image.grey)};
       const std::vector<int> classes[2] = {{kRoadTrainId}, CityscapesDynamicTrainIds()};
       for (int input = 0; input < 2; ++input) {
         for (int c = 0; c < 2; ++c) {
-          iou[input][c][0].Add(predicted[input], truth, classes[c]);
-          iou[input][c][1].Add(predicted[input], truth, classes[c], /*ignore_id=*/-1);
+          iou[input][c][0].Add(predicted[input], image.truth, classes[c]);
+          iou[input][c][1].Add(predicted[input], image.truth, classes[c], /*ignore_id=*/-1);
         }
       }
     }
@@ -88,17 +71,13 @@ void LabelledImageIou() {
 }
 
 void ReuseCost(const std::string& size, int frames) {
-  OnnxSegmenter network(ReadSegmentationModel(ModelYaml(size)), OnnxSegmenter::Options());
+  OnnxSegmenter network(ReadSegmentationModel(ShippedModelYaml(size)), OnnxSegmenter::Options());
   std::vector<SegmentationResult> fresh;
   double milliseconds = 0.0;
   for (int t = 0; t < frames; ++t) {
     char name[16];
     std::snprintf(name, sizeof(name), "%06d", t);
-    const std::string path =
-        (SharedDataDir() / "kitti/sequences/00/image_0" / (std::string(name) + ".png")).string();
-    const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
-    if (image.empty()) throw Error(path + ": cannot read this frame");
-    fresh.push_back(network.Segment(image, name));
+    fresh.push_back(network.Segment(ReadKitti00Frame(t), name));
     milliseconds += fresh.back().milliseconds;
   }
   std::printf("%s on KITTI 00 frames 0..%d (%.0f ms a frame in this run)\n", size.c_str(),

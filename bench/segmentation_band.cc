@@ -20,8 +20,6 @@
 #include <vector>
 
 #include <opencv2/core/utility.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
@@ -31,14 +29,12 @@
 #include "roadscale/util/error.h"
 #include "roadscale/util/shared_data.h"
 
+#include "segmentation_bench_data.h"
+
 namespace roadscale {
 namespace {
 
 constexpr int kNeitherClass = 255;
-
-std::string ModelYaml(const std::string& size) {
-  return std::string(ROADSCALE_SOURCE_DIR) + "/config/models/espnetv2_" + size + ".yaml";
-}
 
 // A way to segment a frame: a network size and the first image row it sees (0: all).
 struct Variant {
@@ -60,24 +56,19 @@ cv::Mat BandLabels(OnnxSegmenter& network, const cv::Mat& image, int first_row) 
   return labels;
 }
 
-std::string FramePath(int index) {
-  char name[16];
-  std::snprintf(name, sizeof(name), "%06d.png", index);
-  return (SharedDataDir() / "kitti/sequences/00/image_0" / name).string();
-}
-
 void Run(const std::vector<Variant>& variants, int frames) {
-  const std::string root = (SharedDataDir() / "kitti_semantics/training").string();
+  const std::vector<LabelledImage> labelled = ReadLabelledKittiImages();
+  std::vector<cv::Mat> frames_00;
+  for (int t = 0; t < frames; ++t) frames_00.push_back(ReadKitti00Frame(t));
   const MaskClasses classes;
   const MaskOptions mask_options;
   OnnxSegmenter::Options network_options;
   network_options.dnn_threads = 1;
 
-  OnnxSegmenter reference_network(ReadSegmentationModel(ModelYaml("512x256")), network_options);
+  OnnxSegmenter reference_network(ReadSegmentationModel(ShippedModelYaml("512x256")),
+                                  network_options);
   std::vector<SegmentationResult> reference;
-  for (int t = 0; t < frames; ++t) {
-    const cv::Mat image = cv::imread(FramePath(t), cv::IMREAD_UNCHANGED);
-    if (image.empty()) throw Error(FramePath(t) + ": cannot read this frame");
+  for (const cv::Mat& image : frames_00) {
     reference.push_back(DeriveMasks(reference_network.Labels(image), classes, mask_options));
   }
 
@@ -85,32 +76,19 @@ void Run(const std::vector<Variant>& variants, int frames) {
       "variant                       | first row | labelled: road IoU | dynamic IoU | KITTI 00 "
       "against 512x256 whole: road IoU | dynamic IoU | dynamic px missed | CPU ms\n");
   for (const Variant& variant : variants) {
-    OnnxSegmenter network(ReadSegmentationModel(ModelYaml(variant.size)), network_options);
+    OnnxSegmenter network(ReadSegmentationModel(ShippedModelYaml(variant.size)), network_options);
     ClassSetIou labelled_road, labelled_dynamic;
-    for (int i = 0; i < 5; ++i) {
-      const std::string name = "00000" + std::to_string(i) + "_10.png";
-      const cv::Mat colour = cv::imread(root + "/image_2/" + name, cv::IMREAD_COLOR);
-      const cv::Mat label_ids = cv::imread(root + "/semantic/" + name, cv::IMREAD_UNCHANGED);
-      if (colour.empty() || label_ids.type() != CV_8UC1) {
-        throw Error(root + ": cannot read image or labels " + name);
-      }
-      cv::Mat truth;
-      cv::LUT(label_ids, CityscapesLabelIdToTrainIdTable(), truth);
-      cv::resize(truth, truth, colour.size(), 0.0, 0.0, cv::INTER_NEAREST);
-      cv::Mat grey;
-      cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
-      const cv::Mat predicted = BandLabels(network, grey, variant.first_row);
-      labelled_road.Add(predicted, truth, {kRoadTrainId});
-      labelled_dynamic.Add(predicted, truth, CityscapesDynamicTrainIds());
+    for (const LabelledImage& image : labelled) {
+      const cv::Mat predicted = BandLabels(network, image.grey, variant.first_row);
+      labelled_road.Add(predicted, image.truth, {kRoadTrainId});
+      labelled_dynamic.Add(predicted, image.truth, CityscapesDynamicTrainIds());
     }
 
     PooledMaskIou road, dynamic;
     double missed = 0.0, dynamic_pixels = 0.0, cpu_ms = 0.0;
     for (int t = 0; t < frames; ++t) {
-      const cv::Mat image = cv::imread(FramePath(t), cv::IMREAD_UNCHANGED);
-      if (image.empty()) throw Error(FramePath(t) + ": cannot read this frame");
       const double cpu_start = ThreadCpuMs();
-      const cv::Mat labels = BandLabels(network, image, variant.first_row);
+      const cv::Mat labels = BandLabels(network, frames_00[t], variant.first_row);
       cpu_ms += ThreadCpuMs() - cpu_start;
       const SegmentationResult masks = DeriveMasks(labels, classes, mask_options);
       road.Add(masks.road_mask, reference[t].road_mask);
@@ -153,6 +131,16 @@ int main(int argc, char** argv) {
       margins = roadscale::ParseMargins(argv[++i]);
     } else {
       std::fprintf(stderr, "usage: %s [--frames 200] [--margins 40,80,120]\n", argv[0]);
+      return 2;
+    }
+  }
+  if (frames < 1 || frames > 4541) {
+    std::fprintf(stderr, "error: --frames must be in 1..4541 (KITTI 00's frames)\n");
+    return 2;
+  }
+  for (const int margin : margins) {
+    if (margin < 0) {
+      std::fprintf(stderr, "error: --margins must be rows (0 or more), comma-separated\n");
       return 2;
     }
   }
