@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -15,6 +14,7 @@
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
+#include "roadscale/segmentation/segmentation_masks.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/line_file.h"
 
@@ -93,12 +93,7 @@ void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked) {
   tracked->record.road_mask_px = cv::countNonZero(road_mask);
   int on_road = 0;
   for (const TrackObservation& observation : tracked->frontend.observations) {
-    const int x = static_cast<int>(std::lround(observation.pixel.x()));
-    const int y = static_cast<int>(std::lround(observation.pixel.y()));
-    if (x >= 0 && y >= 0 && x < road_mask.cols && y < road_mask.rows &&
-        road_mask.at<unsigned char>(y, x) != 0) {
-      ++on_road;
-    }
+    if (PixelOnMask(road_mask, observation.pixel)) ++on_road;
   }
   tracked->record.road_tracks = on_road;
 }

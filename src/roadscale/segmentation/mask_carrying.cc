@@ -8,6 +8,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "roadscale/segmentation/segmentation_masks.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -22,12 +23,6 @@ cv::Matx33d ToCv(const Eigen::Matrix3d& m) {
     for (int c = 0; c < 3; ++c) out(r, c) = m(r, c);
   }
   return out;
-}
-
-bool OnMask(const cv::Mat& mask, const Eigen::Vector2d& p) {
-  const int x = static_cast<int>(std::lround(p.x()));
-  const int y = static_cast<int>(std::lround(p.y()));
-  return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<unsigned char>(y, x) != 0;
 }
 
 // Moves one piece of a moving-object mask (its pixels `piece` at `rect`) as the road under the
@@ -85,7 +80,7 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
   if (prev_road_mask.empty()) return std::nullopt;
   std::vector<cv::Point2f> from, to;
   for (size_t i = 0; i < prev.size(); ++i) {
-    if (!OnMask(prev_road_mask, prev[i])) continue;
+    if (!PixelOnMask(prev_road_mask, prev[i])) continue;
     from.emplace_back(static_cast<float>(prev[i].x()), static_cast<float>(prev[i].y()));
     to.emplace_back(static_cast<float>(cur[i].x()), static_cast<float>(cur[i].y()));
   }

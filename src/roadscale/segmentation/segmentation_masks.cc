@@ -1,5 +1,6 @@
 #include "roadscale/segmentation/segmentation_masks.h"
 
+#include <cmath>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -31,6 +32,12 @@ void MaskClasses::Check() const {
 void MaskOptions::Check() const {
   CheckOption(dynamic_dilation_px >= 0, "dynamic_dilation_px", "must be >= 0");
   CheckOption(road_erosion_px >= 0, "road_erosion_px", "must be >= 0");
+}
+
+bool PixelOnMask(const cv::Mat& mask, const Eigen::Vector2d& p) {
+  const int x = static_cast<int>(std::lround(p.x()));
+  const int y = static_cast<int>(std::lround(p.y()));
+  return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<unsigned char>(y, x) != 0;
 }
 
 cv::Mat LabelsInSet(const cv::Mat& labels, const std::vector<int>& ids) {

@@ -6,6 +6,8 @@
 
 #include "roadscale/segmentation/segmentation_result.h"
 
+#include <Eigen/Core>
+
 namespace roadscale {
 
 // Which train ids make each mask. The defaults are the Cityscapes ones the paper uses.
@@ -31,6 +33,9 @@ struct MaskOptions {
 
   void Check() const;
 };
+
+// Whether pixel `p`, rounded, lies inside `mask` (CV_8UC1) on its non-zero part.
+bool PixelOnMask(const cv::Mat& mask, const Eigen::Vector2d& p);
 
 // 255 where the label is one of `ids`, else 0.
 cv::Mat LabelsInSet(const cv::Mat& labels, const std::vector<int>& ids);

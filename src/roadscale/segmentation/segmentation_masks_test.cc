@@ -113,5 +113,16 @@ TEST(SegmentationMasks, OptionsAreChecked) {
   EXPECT_THROW(classes.Check(), Error);
 }
 
+TEST(PixelOnMask, RoundsThePixelAndIsFalseOutsideTheImage) {
+  cv::Mat mask(10, 20, CV_8UC1, cv::Scalar(0));
+  mask.rowRange(5, 10).setTo(255);
+  EXPECT_TRUE(PixelOnMask(mask, {3.0, 7.2}));
+  EXPECT_TRUE(PixelOnMask(mask, {15.0, 4.6}));   // rounds to row 5
+  EXPECT_FALSE(PixelOnMask(mask, {15.0, 4.4}));  // rounds to row 4
+  EXPECT_FALSE(PixelOnMask(mask, {19.6, 7.0}));  // rounds to column 20, outside
+  EXPECT_FALSE(PixelOnMask(mask, {-0.6, 7.0}));  // rounds to column -1, outside
+  EXPECT_TRUE(PixelOnMask(mask, {-0.4, 9.4}));
+}
+
 }  // namespace
 }  // namespace roadscale
