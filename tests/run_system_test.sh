@@ -73,7 +73,7 @@ if [[ "$mode" == "robustness" ]]; then
   "$roadscale" synth --frames 40 --out "$out/data" >/dev/null 2>&1 || fail "synth failed"
   seq="$out/data/sequences/00"
 
-  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  road_min_points_per_pair: 100000\n' \
+  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  road_min_points_per_pair: 100000\n  road_alignment: false\n' \
     >"$out/noroad.yaml"
   "$roadscale" run --kitti "$seq" --labels "$seq/semantic" --config "$out/noroad.yaml" \
     --out "$out/noroad" >"$out/log.txt" 2>"$out/err.txt" || fail "no-road run failed: $(cat "$out/err.txt")"

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 
 #include <opencv2/core.hpp>
 
@@ -10,6 +11,14 @@
 #include <Eigen/Core>
 
 namespace roadscale {
+
+// The road plane between a keyframe and the keyframe before it, measured on the road's pixels
+// (road_plane_alignment.h): its height in units of the distance between the two cameras,
+// which the bundle adjustment's pair term holds at h0 (road_pair_residual.h).
+struct RoadPairPlane {
+  int anchor_frame = 0;  // the earlier keyframe, in whose frame the plane is
+  double height_per_baseline = 0.0;
+};
 
 // A frame kept in the local window: its pose, what it saw, and its road mask (for the road
 // selection of the next keyframe pair).
@@ -20,6 +29,8 @@ struct Keyframe {
   // rejects are erased.
   std::map<int64_t, Eigen::Vector2d> observations;
   cv::Mat road_mask;  // CV_8UC1, non-zero = road; empty without segmentation
+  cv::Mat image;      // grey CV_8UC1, for the road alignment; may be empty
+  std::optional<RoadPairPlane> road_pair;
   // Distance from the previous keyframe when this keyframe was created (map units): the
   // frames in between were localised at that scale, see KeyframeBackend.
   double baseline_at_creation = 0.0;

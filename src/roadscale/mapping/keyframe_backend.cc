@@ -21,7 +21,7 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
   return cam_from_world.inverse().translation();
 }
 
-Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
+Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
                       const Rigid3d& cam_from_world) {
   Keyframe keyframe;
   keyframe.frame_index = frontend.frame_index;
@@ -30,6 +30,7 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
     keyframe.observations[o.track_id] = o.pixel;
   }
   keyframe.road_mask = road_mask;
+  keyframe.image = image;
   return keyframe;
 }
 
@@ -56,12 +57,13 @@ void MappingOptions::Check() const {
   landmarks.Check();
   localization.Check();
   bundle_adjustment.Check();
+  alignment.Check();
 }
 
 std::string MappedFrameCsvHeader() {
   return "keyframe,keyframe_reason,localization,map_scale,landmarks_seen,road_points,pair_scale,"
          "ba_iterations,ba_cost_before,ba_cost_after,ba_ms,window_keyframes,window_landmarks,"
-         "window_road_landmarks,ba_removed_observations";
+         "window_road_landmarks,ba_removed_observations,alignment_scale,window_road_pairs";
 }
 
 std::string FormatMappedFrameCsv(const MappedFrame& frame) {
@@ -75,7 +77,7 @@ std::string FormatMappedFrameCsv(const MappedFrame& frame) {
       << frame.road_points << ',' << frame.pair_scale << ',' << ba.iterations << ','
       << ba.initial_cost << ',' << ba.final_cost << ',' << ba.milliseconds << ','
       << ba.num_keyframes << ',' << ba.num_landmarks << ',' << ba.num_road_landmarks << ','
-      << ba.removed_observations;
+      << ba.removed_observations << ',' << frame.alignment_scale << ',' << ba.num_road_pairs;
   return out.str();
 }
 
@@ -135,7 +137,7 @@ bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_
 }
 
 std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend,
-                                                   const cv::Mat& road_mask) {
+                                                   const cv::Mat& road_mask, const cv::Mat& image) {
   PendingFrame pending;
   MappedFrame& mapped = pending.mapped;
   mapped.frame_index = frontend.frame_index;
@@ -145,7 +147,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
   if (!has_frame_) {
     has_frame_ = true;
-    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, Rigid3d::Identity()));
+    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, Rigid3d::Identity()));
     mapped.keyframe = true;
     mapped.keyframe_reason = "first";
     pending.keyframe_before = frontend.frame_index;
@@ -174,7 +176,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
   if (reason != KeyframeReason::kNone) {
     mapped.keyframe = true;
     mapped.keyframe_reason = KeyframeReasonName(reason);
-    AddKeyframe(frontend, road_mask, cam_from_world, &mapped);
+    AddKeyframe(frontend, road_mask, image, cam_from_world, &mapped);
     cam_from_world = window_.keyframes().back().cam_from_world;
   }
 
@@ -188,13 +190,15 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 }
 
 void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
-                                  const Rigid3d& cam_from_world, MappedFrame* mapped) {
-  Keyframe keyframe = MakeKeyframe(frontend, road_mask, cam_from_world);
+                                  const cv::Mat& image, const Rigid3d& cam_from_world,
+                                  MappedFrame* mapped) {
+  Keyframe keyframe = MakeKeyframe(frontend, road_mask, image, cam_from_world);
   keyframe.baseline_at_creation =
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
   TriangulateNewLandmarks(camera_, options_.landmarks, &window_);
   mapped->road_points = MarkRoadLandmarks(mapped);
+  if (options_.road_alignment) AlignRoadPair(mapped);
   if (!scaled_) ScaleMapOnFirstRoad();
   mapped->bundle_adjustment =
       AdjustLocalWindow(camera_, camera_height_, options_.bundle_adjustment, &window_);
@@ -306,9 +310,46 @@ std::vector<double> KeyframeBackend::RoadLandmarkHeights() const {
   return heights;
 }
 
+void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
+  std::deque<Keyframe>& keyframes = window_.keyframes();
+  if (keyframes.size() < 2) return;
+  const Keyframe& prev = keyframes[keyframes.size() - 2];
+  Keyframe& cur = keyframes.back();
+  if (prev.image.empty() || cur.image.empty() || prev.road_mask.empty() || cur.road_mask.empty()) {
+    return;
+  }
+  const Rigid3d cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
+  const double baseline = cur_from_prev.translation().norm();
+  if (!(baseline > 0.0)) return;
+  const std::optional<Eigen::Vector3d> expected_normal =
+      ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
+  // Once the map is metric its baseline predicts |t| / h; before, the alignment searches
+  // its whole range.
+  const double expected = scaled_ ? baseline / camera_height_ : 0.0;
+  const RoadPlaneAlignment alignment = AlignRoadPlane(
+      prev.image, cur.image, prev.road_mask, cur.road_mask, camera_, cur_from_prev,
+      expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, options_.alignment);
+  if (!alignment.ok) return;
+  cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
+  mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);
+}
+
+std::vector<double> KeyframeBackend::RoadPairHeights() const {
+  std::vector<double> heights;
+  for (const Keyframe& keyframe : window_.keyframes()) {
+    if (!keyframe.road_pair) continue;
+    const Keyframe* anchor = window_.FindKeyframe(keyframe.road_pair->anchor_frame);
+    if (anchor == nullptr) continue;
+    heights.push_back(keyframe.road_pair->height_per_baseline *
+                      (Centre(keyframe.cam_from_world) - Centre(anchor->cam_from_world)).norm());
+  }
+  return heights;
+}
+
 void KeyframeBackend::ScaleMapOnFirstRoad() {
-  if (window_.CountRoadLandmarks() < options_.bundle_adjustment.min_road_landmarks) return;
-  std::vector<double> heights = RoadLandmarkHeights();
+  const bool enough_landmarks =
+      window_.CountRoadLandmarks() >= options_.bundle_adjustment.min_road_landmarks;
+  std::vector<double> heights = enough_landmarks ? RoadLandmarkHeights() : RoadPairHeights();
   heights.erase(std::remove_if(heights.begin(), heights.end(), [](double h) { return !(h > 0.0); }),
                 heights.end());
   if (heights.empty()) return;

@@ -13,6 +13,7 @@
 #include "roadscale/mapping/landmark_triangulator.h"
 #include "roadscale/mapping/local_bundle_adjuster.h"
 #include "roadscale/mapping/local_window.h"
+#include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
 
 namespace roadscale {
@@ -43,6 +44,12 @@ struct MappingOptions {
   // seed 1 a pair's "road" at 8 times the height (six points on one plane) outvoted eight
   // true road points and shrank the map eightfold.
   double road_max_height_ratio = 1.5;
+  // Each keyframe pair's road plane also measured on the road's pixels (road_plane_alignment.h)
+  // when both keyframes have a road mask and an image: a pair term in the adjustment
+  // (bundle_adjustment.road_pair_sigma_m). It needs no road track to survive between the two
+  // keyframes.
+  bool road_alignment = true;
+  RoadPlaneAlignmentOptions alignment;
   KeyframeSelectorOptions keyframes;
   LandmarkTriangulatorOptions landmarks;
   FrameLocalizerOptions localization;
@@ -70,8 +77,9 @@ struct MappedFrame {
   std::string localization;
   int landmarks_seen = 0;  // landmarks visible when the frame arrived
   std::string keyframe_reason = "none";
-  int road_points = 0;      // keyframes: road landmarks the pair selection marked
-  double pair_scale = 0.0;  // keyframes: h0 / h of the pair's plane, metres per map unit
+  int road_points = 0;           // keyframes: road landmarks the pair selection marked
+  double pair_scale = 0.0;       // keyframes: h0 / h of the pair's plane, metres per map unit
+  double alignment_scale = 0.0;  // keyframes: the same from the road alignment (0: none)
   BundleAdjustmentReport bundle_adjustment;  // keyframes: the adjustment it started
 };
 
@@ -94,7 +102,9 @@ class KeyframeBackend {
 
   // Takes the frontend's result for the next frame and its road mask (empty: none). Returns
   // the frames whose poses became final, in order.
-  std::vector<MappedFrame> AddFrame(const FrontendFrame& frontend, const cv::Mat& road_mask);
+  // `image` is the frame's grey image (empty: no road alignment).
+  std::vector<MappedFrame> AddFrame(const FrontendFrame& frontend, const cv::Mat& road_mask,
+                                    const cv::Mat& image = cv::Mat());
   // Returns every frame still waiting (call after the last frame).
   std::vector<MappedFrame> Finish();
 
@@ -114,8 +124,11 @@ class KeyframeBackend {
   // The first keyframe pair has no map to localise against: its relative pose is the two
   // frames' own two-view motion, at the predicted distance. False when that fails.
   bool BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const;
-  void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
+  void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
                    const Rigid3d& cam_from_world, MappedFrame* mapped);
+  // Measures the road plane between the last two keyframes on their road pixels and keeps it
+  // on the newer one (Keyframe::road_pair) when the alignment converged.
+  void AlignRoadPair(MappedFrame* mapped);
   // Marks the landmarks the paper's selection finds on the road between the last two
   // keyframes; returns how many.
   int MarkRoadLandmarks(MappedFrame* mapped);
@@ -127,6 +140,8 @@ class KeyframeBackend {
                const Eigen::Vector3d& normal_in_anchor);
   // Heights of the window's road landmarks under their anchors along their normals (map units).
   std::vector<double> RoadLandmarkHeights() const;
+  // Camera heights of the window's road pairs (map units): height per baseline times baseline.
+  std::vector<double> RoadPairHeights() const;
   // Gives an unscaled map the road's scale in one step before its first adjustment with it:
   // the adjustment alone would need many iterations for so large a change.
   void ScaleMapOnFirstRoad();

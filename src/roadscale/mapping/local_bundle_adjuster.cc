@@ -13,6 +13,7 @@
 #include "roadscale/mapping/camera_height_residual.h"
 #include "roadscale/mapping/pose_parameters.h"
 #include "roadscale/mapping/reprojection_residual.h"
+#include "roadscale/mapping/road_pair_residual.h"
 #include "roadscale/mapping/two_row_residual.h"
 #include "roadscale/util/error.h"
 
@@ -39,6 +40,8 @@ void LocalBundleAdjusterOptions::Check() const {
   CheckOption(min_road_landmarks >= 3, "mapping.min_road_landmarks",
               "must be >= 3 (a plane needs three points)");
   CheckOption(road_outlier_sigmas > 0.0, "mapping.road_outlier_sigmas", "must be > 0");
+  CheckOption(road_pair_sigma_m > 0.0 && std::isfinite(road_pair_sigma_m),
+              "mapping.road_pair_sigma_m", "must be a positive number of metres");
 }
 
 BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double camera_height,
@@ -52,7 +55,9 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
   report.num_landmarks = static_cast<int>(landmarks.size());
   report.num_road_landmarks = window->CountRoadLandmarks();
   if (keyframes.size() < 2 || landmarks.empty()) return report;
-  report.scale_from_road = report.num_road_landmarks >= options.min_road_landmarks;
+  report.num_road_pairs = window->CountRoadPairs();
+  report.scale_from_road =
+      report.num_road_landmarks >= options.min_road_landmarks || report.num_road_pairs > 0;
 
   std::vector<PoseParameters> poses;
   poses.reserve(keyframes.size());
@@ -86,6 +91,14 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
         new TwoRowResidual(CameraHeightResidual::Create(
             landmark.road_normal_in_anchor, camera_height, options.camera_height_sigma_m)),
         &height_loss, poses[anchor->second].data(), points[id].data());
+  }
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    if (!keyframes[k].road_pair) continue;
+    const auto anchor = pose_of_frame.find(keyframes[k].road_pair->anchor_frame);
+    if (anchor == pose_of_frame.end()) continue;
+    problem.AddResidualBlock(RoadPairResidual::Create(keyframes[k].road_pair->height_per_baseline,
+                                                      camera_height, options.road_pair_sigma_m),
+                             &height_loss, poses[anchor->second].data(), poses[k].data());
   }
   for (size_t k = 0; k < poses.size(); ++k) {
     if (!problem.HasParameterBlock(poses[k].data())) continue;
@@ -134,6 +147,20 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
           landmark.road_normal_in_anchor.dot(anchor->cam_from_world * landmark.position);
       if (std::abs(height - camera_height) > max_offset) {
         landmark.is_road = false;
+        ++report.removed_road_marks;
+      }
+    }
+    const double max_pair_offset = options.road_outlier_sigmas * options.road_pair_sigma_m;
+    for (Keyframe& keyframe : keyframes) {
+      if (!keyframe.road_pair) continue;
+      const Keyframe* anchor = window->FindKeyframe(keyframe.road_pair->anchor_frame);
+      if (anchor == nullptr) continue;
+      const double baseline = (anchor->cam_from_world.inverse().translation() -
+                               keyframe.cam_from_world.inverse().translation())
+                                  .norm();
+      if (std::abs(keyframe.road_pair->height_per_baseline * baseline - camera_height) >
+          max_pair_offset) {
+        keyframe.road_pair.reset();
         ++report.removed_road_marks;
       }
     }

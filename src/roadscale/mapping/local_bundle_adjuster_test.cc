@@ -59,6 +59,16 @@ void Perturb(LocalWindow* window, size_t first_moved, double pose_noise, uint32_
   }
 }
 
+// The window's first-to-last keyframe distance over the true one (the window's scale).
+double LengthOverTruth(const LocalWindow& window, const testing::MappingTestScene& scene) {
+  const Keyframe& first = window.keyframes().front();
+  const Keyframe& last = window.keyframes().back();
+  const double true_length = (Centre(scene.cam_from_world[last.frame_index]) -
+                              Centre(scene.cam_from_world[first.frame_index]))
+                                 .norm();
+  return (Centre(last.cam_from_world) - Centre(first.cam_from_world)).norm() / true_length;
+}
+
 double MaxCentreError(const LocalWindow& window, const testing::MappingTestScene& scene) {
   double worst = 0.0;
   for (const Keyframe& keyframe : window.keyframes()) {
@@ -146,16 +156,52 @@ TEST_P(LocalBundleAdjusterScale, TheCameraHeightTermMakesAWrongScaleMetric) {
   options.max_iterations = 30;
   const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
   EXPECT_TRUE(report.scale_from_road);
-  const double true_length =
-      (Centre(scene.cam_from_world[27]) - Centre(scene.cam_from_world[0])).norm();
-  const double length = (Centre(window.keyframes().back().cam_from_world) -
-                         Centre(window.keyframes().front().cam_from_world))
-                            .norm();
-  EXPECT_NEAR(length / true_length, 1.0, 0.005) << "started at " << wrong_scale << "x";
+  EXPECT_NEAR(LengthOverTruth(window, scene), 1.0, 0.005) << "started at " << wrong_scale << "x";
   EXPECT_LT(MaxCentreError(window, scene), 0.1);
 }
 
 INSTANTIATE_TEST_SUITE_P(TwiceAndHalf, LocalBundleAdjusterScale, ::testing::Values(2.0, 0.5));
+
+// Road alignments of the keyframe pairs alone (no road landmark) make the window metric: each
+// pair's exact camera height per baseline, h0 / |c_k - c_k-1|.
+TEST_P(LocalBundleAdjusterScale, ThePairTermMakesAWrongScaleMetric) {
+  const double wrong_scale = GetParam();
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  for (auto& [id, landmark] : window.landmarks()) landmark.is_road = false;
+  for (size_t k = 1; k < window.keyframes().size(); ++k) {
+    Keyframe& keyframe = window.keyframes()[k];
+    const Keyframe& anchor = window.keyframes()[k - 1];
+    const double baseline =
+        (Centre(keyframe.cam_from_world) - Centre(anchor.cam_from_world)).norm();
+    keyframe.road_pair = RoadPairPlane{anchor.frame_index, 1.65 / baseline};
+  }
+  Corrupt(&window, 0.3, 0.05, 5);
+  window.Rescale(wrong_scale);
+  ASSERT_EQ(window.CountRoadLandmarks(), 0);
+  ASSERT_EQ(window.CountRoadPairs(), 9);
+
+  LocalBundleAdjusterOptions options;
+  options.max_iterations = 30;
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  EXPECT_TRUE(report.scale_from_road);
+  EXPECT_EQ(report.num_road_pairs, 9);
+  EXPECT_NEAR(LengthOverTruth(window, scene), 1.0, 0.005) << "started at " << wrong_scale << "x";
+  EXPECT_LT(MaxCentreError(window, scene), 0.1);
+}
+
+// A pair term far off the adjusted window (a wrong alignment) is dropped after the solve.
+TEST(LocalBundleAdjuster, DropsAPairTermFarOffTheWindow) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  Keyframe& keyframe = window.keyframes()[5];
+  keyframe.road_pair = RoadPairPlane{window.keyframes()[4].frame_index, 1.65 * 1.5 / 3.0};
+  const BundleAdjustmentReport report =
+      AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+  EXPECT_EQ(report.num_road_pairs, 1);
+  EXPECT_FALSE(window.keyframes()[5].road_pair.has_value());
+  EXPECT_GE(report.removed_road_marks, 1);
+}
 
 TEST(LocalBundleAdjuster, FewRoadLandmarksLeaveTheScaleToTheMap) {
   const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
@@ -168,12 +214,7 @@ TEST(LocalBundleAdjuster, FewRoadLandmarksLeaveTheScaleToTheMap) {
   LocalBundleAdjusterOptions options;
   const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
   EXPECT_FALSE(report.scale_from_road);
-  const double length = (Centre(window.keyframes().back().cam_from_world) -
-                         Centre(window.keyframes().front().cam_from_world))
-                            .norm();
-  const double true_length =
-      (Centre(scene.cam_from_world[27]) - Centre(scene.cam_from_world[0])).norm();
-  EXPECT_NEAR(length / true_length, 1.2, 0.01);
+  EXPECT_NEAR(LengthOverTruth(window, scene), 1.2, 0.01);
 }
 
 }  // namespace

@@ -23,6 +23,14 @@ int LocalWindow::CountRoadLandmarks() const {
   return count;
 }
 
+int LocalWindow::CountRoadPairs() const {
+  int count = 0;
+  for (const Keyframe& keyframe : keyframes_) {
+    if (keyframe.road_pair && FindKeyframe(keyframe.road_pair->anchor_frame) != nullptr) ++count;
+  }
+  return count;
+}
+
 void LocalWindow::RemoveOldestKeyframe() {
   if (keyframes_.empty()) return;
   const int oldest = keyframes_.front().frame_index;

@@ -158,6 +158,7 @@ TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input,
   cv::Mat grey = frame.image;
   if (grey.channels() == 3) cv::cvtColor(frame.image, grey, cv::COLOR_BGR2GRAY);
   tracked.frontend = frontend_.ProcessFrame(static_cast<int>(frame.index), grey, masks);
+  tracked.image = grey;
   const FrontendFrame& result = tracked.frontend;
   record.motion_status = result.motion.status;
   record.num_tracks = result.num_tracks;
@@ -185,7 +186,8 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   if (backend_) {
     records_waiting_for_backend_.push_back(record);
     const Clock::time_point backend_start = Clock::now();
-    const std::vector<MappedFrame> finished = backend_->AddFrame(result, tracked.road_mask);
+    const std::vector<MappedFrame> finished =
+        backend_->AddFrame(result, tracked.road_mask, tracked.image);
     // The window holds at least two keyframes, so this frame is never among the finished.
     FrameRecord& waiting = records_waiting_for_backend_.back();
     waiting.scale_ms = MillisecondsSince(backend_start);

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/geometry/rigid3.h"
+#include "roadscale/scale/road_plane.h"
+
+#include <Eigen/Core>
+
+namespace roadscale {
+
+// Beyond the paper: the road plane of a frame pair measured on the road's pixels, not on its
+// tracks.
+//
+// A road pixel of the current image along the ray r = K^-1 x (r.z = 1), on the plane
+// n.X = h of the current camera, was seen in the previous image at pi(K R' (r - u (m.r))),
+// with R' the previous-from-current rotation, u the unit direction of the translation t of
+// cur_from_prev and m = |t| n / h: the plane-induced homography, linear in m. The alignment
+// finds the m (with a grey offset) that
+// makes the previous image, sampled there, match the current one on every textured road
+// pixel, coarse to fine with Gauss-Newton and a Huber loss. The current image's pixels are
+// warped into the previous one because, driving forward, all the road the current image sees
+// was in view before, while the previous image's nearest road has left the current one.
+//
+// Why beside the sparse selection: a track on the road must survive KLT between the two
+// images, and the road right in front of the camera grows by a third from one frame to the
+// next at highway speed, where translation-only KLT fails, and a few metres of road between
+// the car and the one ahead in a traffic jam hold a handful of corners. The warp of the
+// alignment is the road's own homography, so stretched road and low-contrast asphalt count,
+// pixel by pixel.
+struct RoadPlaneAlignmentOptions {
+  // Coarsest pyramid level (0 = full resolution only); each level halves the image.
+  int pyramid_levels = 3;
+  // Pixels whose grey gradient (grey levels per pixel) is below this carry no information
+  // about the warp and are not sampled.
+  double min_gradient = 4.0;
+  // At most this many road pixels per level, spread evenly over the ones that qualify.
+  int max_samples = 4000;
+  // Fewer usable pixels at the finest level: no estimate.
+  int min_samples = 200;
+  int max_iterations = 20;  // Gauss-Newton per level
+  // Huber scale of the grey-level residual: beyond it, a pixel (a shadow edge, a car
+  // crossing the road) counts linearly.
+  double loss_scale_grey = 8.0;
+  // The coarsest level starts from the best of `search_steps` values of |t| / h spaced
+  // evenly in logarithm between these bounds, the normal held at the guess.
+  double min_baseline_over_height = 0.01;
+  double max_baseline_over_height = 10.0;
+  int search_steps = 40;
+  // With an expected |t| / h (the map's scale), the search spans it divided and multiplied
+  // by this instead: repeated road texture (dashed lane lines) has minima at multiples of
+  // the true step.
+  double expected_search_factor = 1.5;
+  // Road mask pixels within this distance of the mask's edge are not sampled: their warped
+  // position may fall on a car or a kerb, and a carried mask's edge is a few pixels off. On
+  // the rendered highways 2 / 8 / 12 px gave mean t_err 4.4 / 2.1 / 1.5 %, on the town drives
+  // 0.44 / 0.41 / 0.40 % (docs/benchmarks.md, "The road's pixels").
+  int mask_erosion_px = 12;
+
+  // Throws Error naming the first invalid option.
+  void Check() const;
+};
+
+struct RoadPlaneAlignment {
+  bool ok = false;  // converged at the finest level, on enough pixels, to a road-like plane
+  bool converged = false;
+  // In the previous camera's frame, the height in units of the translation's length.
+  Plane plane;
+  double rms_grey = 0.0;  // of the samples used at the finest level
+  int samples = 0;        // used at the finest level
+  int iterations = 0;     // summed over the levels
+};
+
+// prev_image and cur_image: grey CV_8UC1 of the camera's size. cur_road_mask: CV_8UC1 of the
+// same size, non-zero = road (the pixels sampled); prev_road_mask: the same for the previous
+// image, or empty (then every warped pixel inside the image counts). cur_from_prev: the
+// motion, of any translation length (only its direction is used). normal_guess: the road
+// normal expected in the previous camera's frame. expected_baseline_over_height: |t| / h if
+// known (the map's scale), else 0 (the whole range is searched). The result's plane is in
+// the previous camera's frame. Throws Error on images or masks of the wrong type or size.
+RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_image,
+                                  const cv::Mat& prev_road_mask, const cv::Mat& cur_road_mask,
+                                  const PinholeCamera& camera, const Rigid3d& cur_from_prev,
+                                  const Eigen::Vector3d& normal_guess,
+                                  double expected_baseline_over_height,
+                                  const RoadPlaneAlignmentOptions& options);
+
+}  // namespace roadscale
