@@ -244,6 +244,10 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
     if (!step.allFinite()) return fit;
     state->m += step.head<3>();
     state->offset += step(3);
+    // So strict that a fit sliding along a flat valley of the cost (repeated texture, the
+    // wrong minimum) runs out of iterations instead: a stop at 1e-4 let such fits through
+    // (bench/road_alignment_accuracy: urban 1 pairs two frames apart, mean error -0.2 % ->
+    // +9.5 %).
     if (step.head<3>().norm() < 1e-6 * state->m.norm()) {
       fit.converged = true;
       break;
