@@ -135,6 +135,8 @@ void RunRescale(const RescaleArguments& arguments) {
     RunConfig config;
     ReadRunConfig(arguments.config, &config);
     options.scale = config.scale;
+    options.road_alignment = config.pipeline.mapping.road_alignment;
+    options.alignment = config.pipeline.mapping.alignment;
   }
   CheckOption(std::isfinite(arguments.max_time_diff) && arguments.max_time_diff >= 0.0,
               "--max-time-diff", "must be a non-negative number of seconds");

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
 #include "roadscale/scale/scale_filter.h"
 #include "roadscale/segmentation/segmenter.h"
@@ -65,6 +67,12 @@ struct TrajectoryRescalerOptions {
   // moves a point at 10 m by 4 % of its depth. The refined motion is only used to triangulate;
   // the output keeps the VO's motion.
   bool refine_motion = true;
+  // Measure each step's road plane on the road's pixels as well (road_plane_alignment.h, the
+  // keyframe back end's Mapping.road_alignment and its options) when both frames have a road
+  // mask: the step's ratio is then the geometric mean of the two planes' ratios, or the one
+  // that exists.
+  bool road_alignment = true;
+  RoadPlaneAlignmentOptions alignment;
   SampsonRefinementOptions refinement = [] {
     SampsonRefinementOptions options;
     options.loss = SampsonRefinementOptions::Loss::kCauchy;  // the tracks still hold outliers
@@ -121,6 +129,8 @@ struct RescaledPose {
   double refinement_rotation_deg = 0.0;   // how far the refinement moved the VO's motion
   double refinement_direction_deg = 0.0;  // (0 without refinement)
   ScaleEstimate estimate;                 // counts after each stage of the scale estimator
+  // The road alignment's ratio (metres per VO unit; NaN when it did not run or converge).
+  double alignment_ratio = std::numeric_limits<double>::quiet_NaN();
 
   // Milliseconds: segmentation of frame b, KLT over the frames a+1..b, detection in frame
   // b, refinement + scale estimate, and the whole step (frame reading included).
@@ -182,7 +192,11 @@ class TrajectoryRescaler {
   bool has_ratio() const { return has_ratio_; }
 
  private:
-  RescaledPose MeasureStep(size_t pose);
+  // `image` and `road_mask`: frame b's grey image and road mask (empty: none).
+  RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask);
+  // The step's |t| / h from the road's pixels (NaN when it does not converge).
+  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, const Rigid3d& b_from_a,
+                   double external_length) const;
   // Applies `ratio` to the step and chains its pose onto the last emitted one.
   RescaledPose Emit(RescaledPose step);
 
@@ -198,6 +212,7 @@ class TrajectoryRescaler {
   size_t next_frame_ = 0;
   size_t next_pose_ = 0;              // the pose whose frame comes next
   cv::Mat prev_road_mask_;            // road mask of the last pose's frame
+  cv::Mat prev_image_;                // grey image of the last pose's frame
   size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
   bool has_ratio_ = false;
   double ratio_ = 0.0;                // the last filtered ratio

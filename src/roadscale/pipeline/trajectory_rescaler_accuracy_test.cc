@@ -2,6 +2,7 @@
 // was destroyed by a seeded, slowly drifting factor (as a monocular VO's) gets its metric
 // scale back from the road plane, on a rendered street and on the shared KITTI 00 frames
 // (keyframes only). Rendering and KLT over hundreds of frames make it slow (label `slow`).
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct Rescaled {
   std::vector<Rigid3d> external;  // the destroyed input
   std::vector<Rigid3d> metric;    // the output
   int ok = 0;
+  int aligned = 0;  // steps whose road alignment converged
 };
 
 // Destroys the scale of `sequence_dir`'s ground truth, keeps every `every`-th pose, and
@@ -56,6 +58,7 @@ Rescaled DestroyAndRescale(const std::string& sequence_dir, size_t every,
   RunTrajectoryRescaler(source, segmenter.get(), rescaler, [&](const RescaledPose& pose) {
     result.metric.push_back(pose.world_from_cam);
     if (pose.status == RescaleStatus::kOk) ++result.ok;
+    if (std::isfinite(pose.alignment_ratio)) ++result.aligned;
   });
   for (size_t k = 0; k < pose_frames.size(); ++k) {
     result.gt.push_back(gt.world_from_cam[pose_frames[k]]);
@@ -97,6 +100,8 @@ TEST_F(RescaleSyntheticTest, RecoversTheScaleOfAnUrbanStreetWithItsRoadLabels) {
   EXPECT_NEAR(*rescaled.length_ratio, 1.0, 0.05);
   EXPECT_LT(rescaled.ate_se3_m, 1.0);
   EXPECT_GE(run.ok, 70);
+  // The road alignment converged on most steps (it needs the road masks).
+  EXPECT_GE(run.aligned, 60);
 }
 
 TEST_F(RescaleSyntheticTest, RecoversTheScaleWithoutSegmentation) {
@@ -106,6 +111,7 @@ TEST_F(RescaleSyntheticTest, RecoversTheScaleWithoutSegmentation) {
   // Measured: 1.015, ATE se3 0.30 m, every step scaled (the paper's plane: 0.993, 0.19 m).
   EXPECT_NEAR(*rescaled.length_ratio, 1.0, 0.05);
   EXPECT_GE(run.ok, 70);
+  EXPECT_EQ(run.aligned, 0);  // no road mask, no alignment
 }
 
 TEST(RescaleKitti, RecoversTheScaleOfKeyframesOnTheSharedKitti00Frames) {
