@@ -58,6 +58,10 @@ void MappingOptions::Check() const {
   localization.Check();
   bundle_adjustment.Check();
   alignment.Check();
+  CheckOption(std::isfinite(road_region_max_distance) && road_region_max_distance >= 0.0,
+              "mapping.road_alignment_region_distance", "must be >= 0 camera heights (0: off)");
+  CheckOption(std::isfinite(road_region_half_width) && road_region_half_width > 0.0,
+              "mapping.road_alignment_region_half_width", "must be > 0 camera heights");
 }
 
 std::string MappedFrameCsvHeader() {
@@ -97,6 +101,10 @@ KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_heig
                  SelectionOptions(selection, camera_height, options.road_min_points_per_pair)) {
   camera_.Check();
   options_.Check();
+  if (options_.road_region_max_distance > 0.0) {
+    road_region_ = RoadRegionAhead(camera_, options_.road_region_max_distance,
+                                   options_.road_region_half_width);
+  }
 }
 
 Rigid3d KeyframeBackend::PredictPose(const TwoViewMotion& motion) const {
@@ -315,9 +323,10 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   if (keyframes.size() < 2) return;
   const Keyframe& prev = keyframes[keyframes.size() - 2];
   Keyframe& cur = keyframes.back();
-  if (prev.image.empty() || cur.image.empty() || prev.road_mask.empty() || cur.road_mask.empty()) {
-    return;
-  }
+  // Without segmentation the road is looked for where it lies ahead of a car on a lane.
+  const cv::Mat& prev_mask = prev.road_mask.empty() ? road_region_ : prev.road_mask;
+  const cv::Mat& cur_mask = cur.road_mask.empty() ? road_region_ : cur.road_mask;
+  if (prev.image.empty() || cur.image.empty() || prev_mask.empty() || cur_mask.empty()) return;
   const Rigid3d cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
   const double baseline = cur_from_prev.translation().norm();
   if (!(baseline > 0.0)) return;
@@ -327,7 +336,7 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   // its whole range.
   const double expected = scaled_ ? baseline / camera_height_ : 0.0;
   const RoadPlaneAlignment alignment = AlignRoadPlane(
-      prev.image, cur.image, prev.road_mask, cur.road_mask, camera_, cur_from_prev,
+      prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
       expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, options_.alignment);
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};

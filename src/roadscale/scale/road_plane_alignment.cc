@@ -349,4 +349,20 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
   return result;
 }
 
+cv::Mat RoadRegionAhead(const PinholeCamera& camera, double max_distance, double half_width) {
+  if (!(max_distance > 0.0) || !(half_width > 0.0)) {
+    throw Error("RoadRegionAhead: the distance and the half width must be positive");
+  }
+  cv::Mat region(camera.height, camera.width, CV_8UC1, cv::Scalar(0));
+  for (int y = 0; y < region.rows; ++y) {
+    uint8_t* row = region.ptr<uint8_t>(y);
+    for (int x = 0; x < region.cols; ++x) {
+      // The ray (r.x, r.y, 1) meets y = h at the distance h / r.y, r.x h / r.y to the side.
+      const Eigen::Vector3d ray = camera.Unproject(Eigen::Vector2d(x, y));
+      if (ray.y() * max_distance >= 1.0 && std::abs(ray.x()) <= half_width * ray.y()) row[x] = 255;
+    }
+  }
+  return region;
+}
+
 }  // namespace roadscale

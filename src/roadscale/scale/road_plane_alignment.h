@@ -86,4 +86,10 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
                                   double expected_baseline_over_height,
                                   const RoadPlaneAlignmentOptions& options);
 
+// Where a level road ahead of the camera is seen when no segmentation says where the road
+// is: 255 at the pixels whose ray meets the plane y = h (camera frame, y down) no farther
+// than `max_distance` camera heights ahead and within `half_width` camera heights to either
+// side, else 0 (CV_8UC1 of the camera's size). Throws Error unless both are positive.
+cv::Mat RoadRegionAhead(const PinholeCamera& camera, double max_distance, double half_width);
+
 }  // namespace roadscale

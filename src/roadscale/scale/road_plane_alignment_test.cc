@@ -117,6 +117,25 @@ TEST(RoadPlaneAlignment, RejectsImagesOfTheWrongSizeOrType) {
       Error);
 }
 
+TEST(RoadRegionAhead, HoldsTheLevelRoadWithinTheDistanceAndWidth) {
+  const PinholeCamera camera = KittiOdometryCamera();
+  const cv::Mat region = RoadRegionAhead(camera, 40.0, 2.5);
+  ASSERT_EQ(region.type(), CV_8UC1);
+  ASSERT_EQ(region.size(), cv::Size(camera.width, camera.height));
+  const int centre = static_cast<int>(camera.cx);
+  // 40 heights ahead the road is fy / 40 = 18.0 px below the principal point.
+  const double nearest_row = camera.cy + camera.fy / 40.0;
+  EXPECT_EQ(region.at<uint8_t>(static_cast<int>(std::ceil(nearest_row)), centre), 255);
+  EXPECT_EQ(region.at<uint8_t>(static_cast<int>(std::floor(nearest_row)) - 1, centre), 0);
+  EXPECT_EQ(region.at<uint8_t>(static_cast<int>(camera.cy) - 20, centre), 0);  // sky
+  EXPECT_EQ(region.at<uint8_t>(camera.height - 1, centre), 255);
+  // The bottom corners look 3.2 heights to the side of a point 3.8 heights ahead: outside.
+  EXPECT_EQ(region.at<uint8_t>(camera.height - 1, 0), 0);
+  EXPECT_EQ(region.at<uint8_t>(camera.height - 1, camera.width - 1), 0);
+  EXPECT_THROW(RoadRegionAhead(camera, 0.0, 2.5), Error);
+  EXPECT_THROW(RoadRegionAhead(camera, 40.0, -1.0), Error);
+}
+
 TEST(RoadPlaneAlignmentOptions, RejectsInvalidValues) {
   RoadPlaneAlignmentOptions options;
   options.min_baseline_over_height = 2.0;
