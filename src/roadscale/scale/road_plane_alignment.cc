@@ -31,9 +31,11 @@ struct Level {
   Eigen::Matrix3d K;
 };
 
-// A road pixel of the source image: its ray (z = 1) and its grey value.
+// A road pixel of the source image: its ray r (z = 1), R r (fixed for the whole alignment,
+// so turned once), and its grey value.
 struct Sample {
   Eigen::Vector3d ray;
+  Eigen::Vector3d rotated;
   float grey = 0.0f;
 };
 
@@ -109,7 +111,8 @@ std::vector<Level> BuildLevels(const cv::Mat& source_image, const cv::Mat& targe
   return levels;
 }
 
-std::vector<Sample> SelectSamples(const Level& level, const RoadPlaneAlignmentOptions& options) {
+std::vector<Sample> SelectSamples(const Level& level, const Eigen::Matrix3d& rotation,
+                                  const RoadPlaneAlignmentOptions& options) {
   cv::Mat dx, dy;
   cv::Sobel(level.source, dx, CV_32F, 1, 0, 1, 0.5);
   cv::Sobel(level.source, dy, CV_32F, 0, 1, 1, 0.5);
@@ -130,6 +133,7 @@ std::vector<Sample> SelectSamples(const Level& level, const RoadPlaneAlignmentOp
     const cv::Point& pixel = textured[static_cast<size_t>(i)];
     Sample sample;
     sample.ray = K_inverse * Eigen::Vector3d(pixel.x, pixel.y, 1.0);
+    sample.rotated = rotation * sample.ray;
     sample.grey = level.source.at<float>(pixel);
     samples.push_back(sample);
   }
@@ -138,10 +142,9 @@ std::vector<Sample> SelectSamples(const Level& level, const RoadPlaneAlignmentOp
 
 // Where a sample lands in the target image (w = R r + d (m.r), q = K w); false when outside
 // the image (with a one-pixel margin for the interpolation) or off the target's road mask.
-bool Warp(const Level& level, const Sample& sample, const Eigen::Matrix3d& rotation,
-          const Eigen::Vector3d& direction, const Eigen::Vector3d& m, Eigen::Vector3d* q, double* x,
-          double* y) {
-  *q = level.K * (rotation * sample.ray + direction * m.dot(sample.ray));
+bool Warp(const Level& level, const Sample& sample, const Eigen::Vector3d& direction,
+          const Eigen::Vector3d& m, Eigen::Vector3d* q, double* x, double* y) {
+  *q = level.K * (sample.rotated + direction * m.dot(sample.ray));
   if (!(q->z() > 1e-9)) return false;
   *x = q->x() / q->z();
   *y = q->y() / q->z();
@@ -179,7 +182,7 @@ std::optional<Eigen::Vector3d> SearchStart(const Level& level, const std::vector
     for (const Sample& sample : samples) {
       Eigen::Vector3d q;
       double x = 0.0, y = 0.0;
-      if (!Warp(level, sample, state.rotation, direction, m, &q, &x, &y)) continue;
+      if (!Warp(level, sample, direction, m, &q, &x, &y)) continue;
       residuals.push_back(Bilinear(level.target, x, y) - sample.grey);
     }
     if (residuals.size() * 2 < samples.size() || residuals.empty()) continue;
@@ -216,7 +219,7 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
     for (const Sample& sample : samples) {
       Eigen::Vector3d q;
       double x = 0.0, y = 0.0;
-      if (!Warp(level, sample, state->rotation, direction, state->m, &q, &x, &y)) continue;
+      if (!Warp(level, sample, direction, state->m, &q, &x, &y)) continue;
       const double residual = Bilinear(level.target, x, y) - sample.grey - state->offset;
       const double gx = Bilinear(level.target_dx, x, y);
       const double gy = Bilinear(level.target_dy, x, y);
@@ -315,7 +318,7 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
   bool started = false;
   for (int l = options.pyramid_levels; l >= 0; --l) {
     const Level& level = levels[l];
-    const std::vector<Sample> samples = SelectSamples(level, options);
+    const std::vector<Sample> samples = SelectSamples(level, state.rotation, options);
     if (!started) {
       const bool expected = expected_baseline_over_height > 0.0;
       const std::optional<Eigen::Vector3d> start =
