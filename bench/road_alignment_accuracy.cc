@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
     int erosion = RoadPlaneAlignmentOptions().mask_erosion_px;
     for (int i = 2; i < argc; i += 2) {
       const std::string flag = argv[i];
+      const bool known = flag == "--gaps" || flag == "--prior" || flag == "--pitch-error-deg" ||
+                         flag == "--max-samples" || flag == "--erosion" || flag == "--every";
+      if (!known) throw Error("unknown option " + flag);
       if (i + 1 >= argc) throw Error("option " + flag + " needs a value");
       if (flag == "--gaps") {
         gaps = ParseList(argv[i + 1]);
@@ -88,11 +91,13 @@ int main(int argc, char** argv) {
         max_samples = std::stoi(argv[i + 1]);
       } else if (flag == "--erosion") {
         erosion = std::stoi(argv[i + 1]);
-      } else if (flag == "--every") {
-        every = std::stoi(argv[i + 1]);
       } else {
-        throw Error("unknown option " + flag);
+        every = std::stoi(argv[i + 1]);
       }
+    }
+    if (every < 1) throw Error("--every must be at least 1");
+    for (int gap : gaps) {
+      if (gap < 1) throw Error("--gaps must be positive frame counts");
     }
     const std::string sequence = dir.filename().string();
     const Trajectory truth = ReadKittiTrajectory(
