@@ -4,13 +4,15 @@
 //
 //   roadscale_road_alignment_accuracy SEQUENCE_DIR [--gaps 1,2,3] [--every 3] [--prior F]
 //                                     [--pitch-error-deg D] [--erosion PX] [--max-samples N]
+//                                     [--max-lateral H] [--max-distance H]
 //
 // SEQUENCE_DIR is a `roadscale synth` sequence (image_0/, semantic/, road_planes.txt, and
 // ../../poses/NN.txt). Pairs k, k + gap for every `every`-th k. --prior F: the alignment is
 // told |t| / h times F (as the map would tell it; 0, the default: no prior, the whole range
 // searched). --pitch-error-deg: the true rotation turned by that much in pitch first (the
 // motion a map would give). --erosion: the road masks' erosion. --max-samples: road pixels per
-// level.
+// level. --max-lateral: road pixels only within H camera heights to either side. --max-distance:
+// only within H camera heights ahead.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -64,7 +66,8 @@ int main(int argc, char** argv) {
     if (argc < 2) {
       std::fprintf(stderr,
                    "usage: %s SEQUENCE_DIR [--gaps 1,2,3] [--every 3] [--prior F] "
-                   "[--pitch-error-deg D] [--erosion PX] [--max-samples N]\n",
+                   "[--pitch-error-deg D] [--erosion PX] [--max-samples N] [--max-lateral H] "
+                   "[--max-distance H]\n",
                    argv[0]);
       return 2;
     }
@@ -75,10 +78,13 @@ int main(int argc, char** argv) {
     int max_samples = RoadPlaneAlignmentOptions().max_samples;
     double pitch_error_deg = 0.0;
     int erosion = RoadPlaneAlignmentOptions().mask_erosion_px;
+    double max_lateral = RoadPlaneAlignmentOptions().max_lateral_offset;
+    double max_distance = RoadPlaneAlignmentOptions().max_distance;
     for (int i = 2; i < argc; i += 2) {
       const std::string flag = argv[i];
       const bool known = flag == "--gaps" || flag == "--prior" || flag == "--pitch-error-deg" ||
-                         flag == "--max-samples" || flag == "--erosion" || flag == "--every";
+                         flag == "--max-samples" || flag == "--erosion" || flag == "--every" ||
+                         flag == "--max-lateral" || flag == "--max-distance";
       if (!known) throw Error("unknown option " + flag);
       if (i + 1 >= argc) throw Error("option " + flag + " needs a value");
       if (flag == "--gaps") {
@@ -91,6 +97,10 @@ int main(int argc, char** argv) {
         max_samples = std::stoi(argv[i + 1]);
       } else if (flag == "--erosion") {
         erosion = std::stoi(argv[i + 1]);
+      } else if (flag == "--max-lateral") {
+        max_lateral = std::stod(argv[i + 1]);
+      } else if (flag == "--max-distance") {
+        max_distance = std::stod(argv[i + 1]);
       } else {
         every = std::stoi(argv[i + 1]);
       }
@@ -108,6 +118,8 @@ int main(int argc, char** argv) {
     RoadPlaneAlignmentOptions options;
     options.mask_erosion_px = erosion;
     options.max_samples = max_samples;
+    options.max_lateral_offset = max_lateral;
+    options.max_distance = max_distance;
     std::printf(
         "gap | pairs | failed | median |error| %% | p90 |error| %% | mean error %% | "
         "median normal error deg | ms per pair\n");

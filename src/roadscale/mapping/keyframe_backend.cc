@@ -297,7 +297,10 @@ int KeyframeBackend::MarkRoad(const std::vector<int64_t>& landmark_ids, const Ke
   // selection let through. A few such points agree with each other and would pull the whole
   // window to their scale, which the robust loss cannot stop when they are nearly as many as
   // the true road points.
-  if (!RoadHeightsAgree(heights, RoadLandmarkHeights(), options_.road_max_height_ratio)) return 0;
+  if (!RoadHeightsAgree(heights, RoadLandmarkHeights(), RoadPairHeights(),
+                        options_.road_max_height_ratio)) {
+    return 0;
+  }
   for (int64_t id : ids) {
     Landmark& landmark = window_.landmarks().at(id);
     landmark.is_road = true;

@@ -184,6 +184,8 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("road_alignment_loss_grey", &a.alignment.loss_scale_grey),
         Scalar("road_alignment_search_factor", &a.alignment.expected_search_factor),
         Scalar("road_alignment_mask_erosion_px", &a.alignment.mask_erosion_px),
+        Scalar("road_alignment_max_lateral", &a.alignment.max_lateral_offset),
+        Scalar("road_alignment_max_distance", &a.alignment.max_distance),
         Scalar("road_alignment_region_distance", &a.road_region_max_distance),
         Scalar("road_alignment_region_half_width", &a.road_region_half_width),
         Scalar("localization_min_landmarks", &a.localization.min_landmarks),

@@ -111,22 +111,47 @@ std::vector<Level> BuildLevels(const cv::Mat& source_image, const cv::Mat& targe
   return levels;
 }
 
+// Whether the point the ray r (r.z = 1) meets on the plane n.X = 1 (n unit, camera heights)
+// lies within the options' limits: sideways along the camera's x axis laid into the plane,
+// ahead along its z axis.
+bool WithinSampledRegion(const Eigen::Vector3d& ray, const Eigen::Vector3d& normal,
+                         const Eigen::Vector3d& sideways,
+                         const RoadPlaneAlignmentOptions& options) {
+  const double along_normal = normal.dot(ray);
+  if (!(along_normal > 0.0)) return false;
+  if (options.max_lateral_offset > 0.0 &&
+      std::abs(sideways.dot(ray)) > options.max_lateral_offset * along_normal) {
+    return false;
+  }
+  return options.max_distance <= 0.0 || ray.z() <= options.max_distance * along_normal;
+}
+
 std::vector<Sample> SelectSamples(const Level& level, const Eigen::Matrix3d& rotation,
+                                  const Eigen::Vector3d& normal, bool within_limits,
                                   const RoadPlaneAlignmentOptions& options) {
   cv::Mat dx, dy;
   cv::Sobel(level.source, dx, CV_32F, 1, 0, 1, 0.5);
   cv::Sobel(level.source, dy, CV_32F, 0, 1, 1, 0.5);
   const float min_squared = static_cast<float>(options.min_gradient * options.min_gradient);
+  const Eigen::Matrix3d K_inverse = level.K.inverse();
+  const Eigen::Vector3d sideways =
+      (Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(normal) * normal).normalized();
+  const bool limited =
+      within_limits && (options.max_lateral_offset > 0.0 || options.max_distance > 0.0);
   std::vector<cv::Point> textured;
   for (int y = 1; y + 1 < level.source.rows; ++y) {
     const uint8_t* mask = level.source_mask.ptr<uint8_t>(y);
     const float* gx = dx.ptr<float>(y);
     const float* gy = dy.ptr<float>(y);
     for (int x = 1; x + 1 < level.source.cols; ++x) {
-      if (mask[x] != 0 && gx[x] * gx[x] + gy[x] * gy[x] >= min_squared) textured.emplace_back(x, y);
+      if (mask[x] == 0 || gx[x] * gx[x] + gy[x] * gy[x] < min_squared) continue;
+      if (limited &&
+          !WithinSampledRegion(K_inverse * Eigen::Vector3d(x, y, 1.0), normal, sideways, options)) {
+        continue;
+      }
+      textured.emplace_back(x, y);
     }
   }
-  const Eigen::Matrix3d K_inverse = level.K.inverse();
   const double stride = std::max(1.0, static_cast<double>(textured.size()) / options.max_samples);
   std::vector<Sample> samples;
   for (double i = 0.0; i < static_cast<double>(textured.size()); i += stride) {
@@ -287,6 +312,10 @@ void RoadPlaneAlignmentOptions::Check() const {
   CheckOption(std::isfinite(expected_search_factor) && expected_search_factor > 1.0,
               "road_alignment.expected_search_factor", "must be > 1");
   CheckOption(mask_erosion_px >= 0, "road_alignment.mask_erosion_px", "must be >= 0 pixels");
+  CheckOption(std::isfinite(max_lateral_offset) && max_lateral_offset >= 0.0,
+              "road_alignment.max_lateral_offset", "must be >= 0 camera heights (0: no limit)");
+  CheckOption(std::isfinite(max_distance) && max_distance >= 0.0, "road_alignment.max_distance",
+              "must be >= 0 camera heights (0: no limit)");
 }
 
 RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_image,
@@ -318,7 +347,8 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
   bool started = false;
   for (int l = options.pyramid_levels; l >= 0; --l) {
     const Level& level = levels[l];
-    const std::vector<Sample> samples = SelectSamples(level, state.rotation, options);
+    const std::vector<Sample> samples =
+        SelectSamples(level, state.rotation, normal_in_cur, l == 0, options);
     if (!started) {
       const bool expected = expected_baseline_over_height > 0.0;
       const std::optional<Eigen::Vector3d> start =

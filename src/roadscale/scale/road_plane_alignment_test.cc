@@ -1,6 +1,7 @@
 #include "roadscale/scale/road_plane_alignment.h"
 
 #include <cmath>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -23,9 +24,10 @@ struct RenderedPair {
   PinholeCamera camera;
 };
 
-RenderedPair RenderPair(const char* preset, int prev, int cur) {
+RenderedPair RenderPair(const char* preset, int prev, int cur, double crown_slope = -1.0) {
   synth::SceneOptions options = synth::PresetSceneOptions(preset);
   options.seed = 1;
+  if (crown_slope >= 0.0) options.road.crown_slope = crown_slope;
   synth::SyntheticScene scene(options, cur + 1);
   const synth::SynthFrame a = scene.Render(prev, false);
   const synth::SynthFrame b = scene.Render(cur, false);
@@ -49,6 +51,14 @@ RoadPlaneAlignment Align(const RenderedPair& pair, double expected_baseline_over
   return AlignRoadPlane(pair.prev_image, pair.cur_image, pair.prev_road, pair.cur_road, pair.camera,
                         pair.cur_from_prev, Eigen::Vector3d::UnitY(), expected_baseline_over_height,
                         options);
+}
+
+// Every road pixel sampled at every level, wherever it lies.
+RoadPlaneAlignmentOptions WholeRoadOptions() {
+  RoadPlaneAlignmentOptions options;
+  options.max_lateral_offset = 0.0;
+  options.max_distance = 0.0;
+  return options;
 }
 
 TEST(RoadPlaneAlignment, MeasuresTheRoadOfARenderedStreetWithoutAPrior) {
@@ -81,6 +91,44 @@ TEST(RoadPlaneAlignment, FollowsTheStretchedRoadOfAHighwayFromAPrior) {
   const RoadPlaneAlignment fit = Align(pair, 1.2 / truth);
   ASSERT_TRUE(fit.ok);
   EXPECT_NEAR(fit.plane.height / truth, 1.0, 0.02);
+}
+
+// A crowned road falls away to both edges: the plane through the whole carriageway lies below
+// the road under the car; the road near the car's own path is the plane the car stands on.
+TEST(RoadPlaneAlignment, MeasuresTheCrownedRoadUnderTheCarFromItsOwnLane) {
+  const RenderedPair pair = RenderPair("urban", 10, 12, 0.08);
+  const double truth = TrueHeightPerBaseline(pair);
+  const RoadPlaneAlignment whole = Align(pair, 0.0, WholeRoadOptions());
+  RoadPlaneAlignmentOptions near_options;
+  near_options.max_lateral_offset = 1.0;
+  const RoadPlaneAlignment near = Align(pair, 0.0, near_options);
+  ASSERT_TRUE(whole.ok);
+  ASSERT_TRUE(near.ok);
+  // Measured: the whole road 1.5 % too high, the car's lane 0.07 %.
+  EXPECT_GT(whole.plane.height / truth, 1.008);
+  EXPECT_NEAR(near.plane.height / truth, 1.0, 0.005);
+}
+
+TEST(RoadPlaneAlignment, SamplesNoRoadBeyondItsLimits) {
+  const RenderedPair pair = RenderPair("urban", 10, 12);
+  RoadPlaneAlignmentOptions lateral = WholeRoadOptions();
+  lateral.max_lateral_offset = 1.0;
+  RoadPlaneAlignmentOptions ahead = WholeRoadOptions();
+  ahead.max_distance = 8.0;
+  // Only the road more than two camera heights to the left left in the mask ...
+  RenderedPair left = pair;
+  left.cur_road = pair.cur_road.clone();
+  left.cur_road.setTo(0, RoadRegionAhead(pair.camera, 1e6, 2.0));
+  left.cur_road.colRange(static_cast<int>(pair.camera.cx), pair.camera.width).setTo(0);
+  // ... or only the road more than 10 camera heights ahead.
+  RenderedPair far = pair;
+  far.cur_road = pair.cur_road.clone();
+  far.cur_road.setTo(0, RoadRegionAhead(pair.camera, 10.0, 1e6));
+  for (const auto& [cut, limited] : {std::pair(left, lateral), std::pair(far, ahead)}) {
+    ASSERT_TRUE(Align(pair, 0.0, limited).ok);
+    EXPECT_GT(Align(cut, 0.0, WholeRoadOptions()).samples, 0);
+    EXPECT_FALSE(Align(cut, 0.0, limited).ok);
+  }
 }
 
 TEST(RoadPlaneAlignment, FindsNoPlaneWithoutRoadTexture) {
@@ -143,6 +191,12 @@ TEST(RoadPlaneAlignmentOptions, RejectsInvalidValues) {
   EXPECT_THROW(options.Check(), Error);
   options = RoadPlaneAlignmentOptions();
   options.expected_search_factor = 1.0;
+  EXPECT_THROW(options.Check(), Error);
+  options = RoadPlaneAlignmentOptions();
+  options.max_lateral_offset = -1.0;
+  EXPECT_THROW(options.Check(), Error);
+  options = RoadPlaneAlignmentOptions();
+  options.max_distance = std::nan("");
   EXPECT_THROW(options.Check(), Error);
   options = RoadPlaneAlignmentOptions();
   options.min_samples = options.max_samples + 1;
