@@ -8,7 +8,8 @@ prints, over the moving frames (true step >= 5 cm): the raw road-plane scale of 
 with their own plane (status ok) and the applied step length, each against the true step
 length: the median of the absolute error, its mean (the bias) and its 90th percentile; then
 the raw scale again from frame --skip-until on (KITTI 00's ground truth has a constant speed in
-frames 1-13 that the images do not show), and the path-length ratio.
+frames 1-13 that the images do not show), and the path-length ratio, over all frames and from
+frame --skip-until on.
 """
 import argparse
 import csv
@@ -57,13 +58,16 @@ def main():
         sys.exit(f"{frames_path}: {len(rows)} frames but {len(truth)} ground-truth poses")
 
     raw, applied, late = [], [], []
-    estimated_path = true_path = 0.0
+    estimated_path = true_path = late_estimated_path = late_true_path = 0.0
     for index in range(1, len(rows)):
         row = rows[index]
         true_step = math.dist(truth[index], truth[index - 1])
         step = float(row["step_length_m"])
         estimated_path += step
         true_path += true_step
+        if index >= args.skip_until:
+            late_estimated_path += step
+            late_true_path += true_step
         if true_step < 0.05:
             continue
         applied.append(step / true_step - 1.0)
@@ -77,6 +81,9 @@ def main():
     print(f"raw, frames >= {args.skip_until:<4}:            {summary(late)}")
     if true_path > 0.0:
         print(f"path length ratio (est / true):  {estimated_path / true_path:.4f}")
+    if late_true_path > 0.0:
+        print(f"path length ratio, frames >= {args.skip_until:<4}: "
+              f"{late_estimated_path / late_true_path:.4f}")
 
 
 if __name__ == "__main__":
