@@ -268,6 +268,7 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
   records_waiting_for_backend_.pop_front();
   record.keyframe = mapped.keyframe;
   record.bundle_adjustment_ms = mapped.bundle_adjustment.milliseconds;
+  record.road_aligned = mapped.alignment_scale > 0.0;
   record.step_length_m =
       (mapped.world_from_cam.translation() - last_written_world_from_cam_.translation()).norm();
   record.scale_valid = mapped.scale != MappedFrame::Scale::kNone;
@@ -384,6 +385,7 @@ void RunSummary::Add(const FrameRecord& record) {
   if (record.scale_valid) ++scaled_frames;
   if (record.keyframe) {
     ++keyframes;
+    if (record.road_aligned) ++road_aligned_keyframes;
     bundle_adjustment_ms.push_back(record.bundle_adjustment_ms);
   }
 }
@@ -410,7 +412,9 @@ std::string RunSummary::Format() const {
   if (keyframes > 0) {
     std::vector<double> sorted = bundle_adjustment_ms;
     std::sort(sorted.begin(), sorted.end());
-    out << "Keyframes: " << keyframes << "; bundle adjustment ms per keyframe: median "
+    // Whether the road's pixels fixed the scale: none with bad road masks or a wrong camera.
+    out << "Keyframes: " << keyframes << " (the road alignment converged on "
+        << road_aligned_keyframes << " of their pairs); bundle adjustment ms per keyframe: median "
         << sorted[sorted.size() / 2] << ", p95 "
         << sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)] << '\n';
   }

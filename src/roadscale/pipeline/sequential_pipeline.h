@@ -94,6 +94,9 @@ struct FrameRecord {
   // this long (also counted in scale_ms, the back end's time for the frame).
   bool keyframe = false;
   double bundle_adjustment_ms = 0.0;
+  // Keyframe mode: the road alignment of the keyframe's pair converged (frames.csv's
+  // alignment_scale is set).
+  bool road_aligned = false;
 };
 
 // The header and one row of OUT/frames.csv (without the scale source's columns).
@@ -222,6 +225,7 @@ struct RunSummary {
   size_t detection_frames = 0;  // frames with a re-detection
   size_t scaled_frames = 0;     // frames whose step length came from the scale source
   size_t keyframes = 0;
+  size_t road_aligned_keyframes = 0;         // whose pair's road alignment converged
   size_t segmented_frames = 0;               // frames the segmenter ran on
   std::vector<double> bundle_adjustment_ms;  // one per keyframe
   double mean_load_ms = 0.0;

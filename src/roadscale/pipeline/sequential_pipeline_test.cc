@@ -53,5 +53,23 @@ TEST(SequentialPipeline, RejectsAnOutputFolderThatCannotBeCreated) {
   EXPECT_THROW([&] { SequentialPipeline pipeline(camera, scale, {}, blocker + "/out"); }(), Error);
 }
 
+TEST(RunSummary, CountsTheKeyframesAndTheirRoadAlignments) {
+  RunSummary summary;
+  FrameRecord record;
+  summary.Add(record);
+  record.keyframe = true;
+  record.bundle_adjustment_ms = 40.0;
+  summary.Add(record);
+  record.road_aligned = true;
+  summary.Add(record);
+  EXPECT_EQ(summary.keyframes, 2u);
+  EXPECT_EQ(summary.road_aligned_keyframes, 1u);
+  EXPECT_NE(summary.Format().find(
+                "Keyframes: 2 (the road alignment converged on 1 of their pairs); bundle "
+                "adjustment ms per keyframe: median 40.0"),
+            std::string::npos)
+      << summary.Format();
+}
+
 }  // namespace
 }  // namespace roadscale
