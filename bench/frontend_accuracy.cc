@@ -68,6 +68,9 @@ int Run(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   roadscale::PipelineOptions options;
+  // The frontend alone: the keyframe host would replace its steps by the map's, which do not
+  // take their lengths from the oracle.
+  options.mapping.mode = roadscale::MappingOptions::Mode::kFrameToFrame;
   options.frontend.tracker.detector.type = roadscale::ParseDetectorType(detector);
   options.frontend.tracker.redetect_below = redetect_below;
   options.frontend.tracker.klt.max_forward_backward_error_px = fb;
