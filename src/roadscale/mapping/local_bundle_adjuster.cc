@@ -79,6 +79,13 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
     for (const auto& [id, pixel] : keyframes[k].observations) {
       const auto point = points.find(id);
       if (point == points.end()) continue;
+      // A residual that cannot be evaluated at the start (a landmark behind the camera: a
+      // wrong track, or a pose moved by the last adjustment) makes Ceres give up on the whole
+      // window; such an observation is left out here and removed with the outliers below.
+      if (!std::isfinite(
+              ReprojectionError(camera, keyframes[k].cam_from_world, point->second, pixel))) {
+        continue;
+      }
       problem.AddResidualBlock(ReprojectionResidual::Create(camera, pixel), &reprojection_loss,
                                poses[k].data(), point->second.data());
     }

@@ -112,6 +112,33 @@ TEST(LocalBundleAdjuster, RecoversPosesAndLandmarksFromNoiseAndOutliers) {
   EXPECT_GT(accurate, 0.9 * near_points);
 }
 
+TEST(LocalBundleAdjuster, ALandmarkBehindOneKeyframeDoesNotStopTheAdjustment) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  for (auto& [id, landmark] : window.landmarks()) landmark.is_road = false;
+  Perturb(&window, 2, 0.3, 2);
+  ASSERT_GT(MaxCentreError(window, scene), 0.1);
+  // One landmark seen by the newest keyframe moved 1 m behind it (a wrong triangulation):
+  // its reprojection there cannot be evaluated, and Ceres gives up on a window whose start
+  // it cannot evaluate.
+  const Keyframe& newest = window.keyframes().back();
+  ASSERT_FALSE(newest.observations.empty());
+  const int64_t moved = newest.observations.begin()->first;
+  const Eigen::Vector3d forward = newest.cam_from_world.linear().transpose().col(2);
+  window.landmarks().at(moved).position = Centre(newest.cam_from_world) - forward;
+
+  LocalBundleAdjusterOptions options;
+  options.max_iterations = 30;
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  EXPECT_TRUE(report.ran);
+  EXPECT_GT(report.iterations, 0);
+  EXPECT_LT(report.final_cost, report.initial_cost);
+  EXPECT_LT(MaxCentreError(window, scene), 0.03);
+  // Its other views bring it back to where it belongs.
+  const double depth = (scene.cam_from_world[0] * scene.points[moved]).z();
+  EXPECT_LT((window.landmarks().at(moved).position - scene.points[moved]).norm(), 0.02 * depth);
+}
+
 TEST(LocalBundleAdjuster, TheGaugeFollowsTheOldestKeyframe) {
   // The same window moved and turned as a whole: the adjustment gives the same window,
   // moved and turned the same way - nothing but the oldest keyframe anchors it.
