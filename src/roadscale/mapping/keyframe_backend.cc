@@ -205,6 +205,9 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
   TriangulateNewLandmarks(camera_, options_.landmarks, &window_);
+  if (const std::optional<GroundPlane> ground = GroundUnderNewestKeyframe()) {
+    RemoveLandmarksBelowGround(*ground, options_.landmarks, &window_);
+  }
   mapped->road_points = MarkRoadLandmarks(mapped);
   if (options_.road_alignment) AlignRoadPair(mapped);
   if (!scaled_) ScaleMapOnFirstRoad();
@@ -212,6 +215,17 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
       AdjustLocalWindow(camera_, camera_height_, options_.bundle_adjustment, &window_);
   last_scale_from_road_ = mapped->bundle_adjustment.scale_from_road;
   if (last_scale_from_road_) scaled_ = true;
+}
+
+std::optional<GroundPlane> KeyframeBackend::GroundUnderNewestKeyframe() const {
+  const std::deque<Keyframe>& keyframes = window_.keyframes();
+  if (!scaled_ || keyframes.size() < 2) return std::nullopt;
+  const Rigid3d cur_from_prev =
+      keyframes.back().cam_from_world * keyframes[keyframes.size() - 2].cam_from_world.inverse();
+  const std::optional<Eigen::Vector3d> normal =
+      ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
+  if (!normal) return std::nullopt;
+  return GroundPlane{*normal, camera_height_};
 }
 
 int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {

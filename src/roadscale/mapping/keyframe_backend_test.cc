@@ -127,6 +127,36 @@ TEST(KeyframeBackend, PoolsTheRoadOfSeveralPairsWhereOnePairSeesTooLittle) {
   EXPECT_GE(keyframes_with_road[3], 2 * keyframes_with_road[1]);
 }
 
+// Static points two camera heights under the road, seen through it: what a track that keeps
+// catching the next post of a guard rail looks like to the map.
+TEST(KeyframeBackend, KeepsNoLandmarksFarBelowTheRoadOnceMetric) {
+  auto scene = testing::MappingTestScene::Street(60, 1.0, 0.2);
+  const size_t first_below = scene.points.size();
+  for (int i = 0; i < 60; ++i) {
+    const double x = -6.0 + 0.2 * i;
+    const double z = 20.0 + 1.3 * i;
+    scene.points.emplace_back(x, 3.0 * scene.camera_height, z);
+    scene.is_road.push_back(false);
+  }
+  const auto below_ground_landmarks = [&](const MappingOptions& options) {
+    KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
+                            100);
+    int count = 0;
+    for (int f = 0; f < 60; ++f) {
+      backend.AddFrame(scene.Frontend(f, 0.2, 3), RoadMask(scene, f));
+      if (f < 40) continue;  // the map is metric well before this
+      for (const auto& [id, landmark] : backend.window().landmarks()) {
+        count += static_cast<size_t>(id) >= first_below;
+      }
+    }
+    return count;
+  };
+  MappingOptions without_check;
+  without_check.landmarks.max_depth_below_ground = 0.0;
+  EXPECT_GT(below_ground_landmarks(without_check), 20);
+  EXPECT_EQ(below_ground_landmarks(MappingOptions()), 0);
+}
+
 TEST(KeyframeBackend, TheWindowStaysBounded) {
   const auto scene = testing::MappingTestScene::Street(100, 1.0, 0.1);
   MappingOptions options;

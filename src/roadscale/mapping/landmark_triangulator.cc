@@ -37,6 +37,9 @@ void LandmarkTriangulatorOptions::Check() const {
               "mapping.landmark_min_parallax_deg", "must be in [0, 90) degrees");
   CheckOption(max_reprojection_error_px > 0.0, "mapping.landmark_max_reprojection_error_px",
               "must be > 0");
+  CheckOption(max_depth_below_ground >= 0.0 && std::isfinite(max_depth_below_ground),
+              "mapping.landmark_max_depth_below_ground",
+              "must be >= 0 camera heights (0: no check)");
 }
 
 std::optional<Eigen::Vector3d> TriangulateMultiView(const std::vector<PointView>& views,
@@ -92,6 +95,28 @@ int TriangulateNewLandmarks(const PinholeCamera& camera, const LandmarkTriangula
     ++created;
   }
   return created;
+}
+
+int RemoveLandmarksBelowGround(const GroundPlane& ground,
+                               const LandmarkTriangulatorOptions& options, LocalWindow* window) {
+  if (options.max_depth_below_ground <= 0.0 || window->keyframes().empty()) return 0;
+  // Near the horizon the flat ground says nothing: with the road normal a degree off, a tree
+  // 200 m away on the horizon lies 3.5 m "below" the road. Only rays that meet the ground
+  // within this many camera heights (2.9 degrees or more below the horizon) are checked; a
+  // post caught 15 m ahead lies on a ray 6 degrees down.
+  constexpr double kMaxGroundDistanceHeights = 20.0;
+  const Rigid3d& newest = window->keyframes().back().cam_from_world;
+  const double deepest = (1.0 + options.max_depth_below_ground) * ground.height;
+  std::vector<int64_t> below;
+  for (const auto& [id, landmark] : window->landmarks()) {
+    const Eigen::Vector3d point = newest * landmark.position;
+    const double down = ground.normal.dot(point.normalized());
+    if (down >= 1.0 / kMaxGroundDistanceHeights && ground.normal.dot(point) > deepest) {
+      below.push_back(id);
+    }
+  }
+  for (int64_t id : below) window->RemoveTrack(id);
+  return static_cast<int>(below.size());
 }
 
 }  // namespace roadscale

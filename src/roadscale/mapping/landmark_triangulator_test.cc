@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/mapping/mapping_test_scene.h"
+#include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
@@ -66,6 +67,54 @@ TEST(TriangulateNewLandmarks, MakesLandmarksOfTracksSeenInEarlierKeyframesOnly) 
       EXPECT_EQ(window.landmarks().count(id), 0u);
     }
   }
+}
+
+// A track that caught the next post of a guard rail, or a stripe's neighbour, moves less
+// than the point it started on: its rays meet far beyond the ground, below the road plane.
+TEST(RemoveLandmarksBelowGround, ErasesTheTracksFarBelowTheRoadOnly) {
+  const testing::MappingTestScene scene = testing::MappingTestScene::Street(3, 1.0, 0.0);
+  const Eigen::Vector3d road_point(2.0, 1.65, 12.0);
+  const Eigen::Vector3d below_ground = 3.0 * road_point;  // seen where the road point is
+  const int64_t road_id = 1, below_id = 2;
+  const auto window_of_both = [&] {
+    LocalWindow window;
+    for (int f : {0, 1, 2}) {
+      Keyframe keyframe;
+      keyframe.frame_index = f;
+      keyframe.cam_from_world = scene.cam_from_world[f];
+      keyframe.observations[road_id] = scene.camera.Project(scene.cam_from_world[f] * road_point);
+      keyframe.observations[below_id] =
+          scene.camera.Project(scene.cam_from_world[f] * below_ground);
+      window.AddKeyframe(std::move(keyframe));
+    }
+    EXPECT_EQ(TriangulateNewLandmarks(scene.camera, {}, &window), 2);
+    return window;
+  };
+  const GroundPlane ground{Eigen::Vector3d::UnitY(), 1.65};
+  LandmarkTriangulatorOptions options;
+  options.max_depth_below_ground = 1.0;
+
+  LocalWindow window = window_of_both();
+  EXPECT_EQ(RemoveLandmarksBelowGround(ground, options, &window), 1);
+  EXPECT_EQ(window.landmarks().count(road_id), 1u);
+  EXPECT_EQ(window.landmarks().count(below_id), 0u);
+  EXPECT_EQ(window.CountObservations(below_id), 0);  // not triangulated again from them
+  EXPECT_EQ(window.CountObservations(road_id), 3);
+
+  options.max_depth_below_ground = 2.5;  // three heights under the camera: within 3.5
+  LocalWindow tolerant = window_of_both();
+  EXPECT_EQ(RemoveLandmarksBelowGround(ground, options, &tolerant), 0);
+  options.max_depth_below_ground = 0.0;  // no check
+  EXPECT_EQ(RemoveLandmarksBelowGround(ground, options, &tolerant), 0);
+}
+
+TEST(LandmarkTriangulatorOptions, RejectsANegativeDepthBelowTheGround) {
+  LandmarkTriangulatorOptions options;
+  EXPECT_NO_THROW(options.Check());
+  options.max_depth_below_ground = 0.0;  // no check
+  EXPECT_NO_THROW(options.Check());
+  options.max_depth_below_ground = -1.0;
+  EXPECT_THROW(options.Check(), Error);
 }
 
 }  // namespace

@@ -172,6 +172,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("keyframe_max_frame_gap", &a.keyframes.max_frame_gap),
         Scalar("landmark_min_parallax_deg", &a.landmarks.min_parallax_deg),
         Scalar("landmark_max_reprojection_error_px", &a.landmarks.max_reprojection_error_px),
+        Scalar("landmark_max_depth_below_ground", &a.landmarks.max_depth_below_ground),
         Scalar("road_min_points_per_pair", &a.road_min_points_per_pair),
         Scalar("road_pool_pairs", &a.road_pool_pairs),
         Scalar("road_max_height_ratio", &a.road_max_height_ratio),
