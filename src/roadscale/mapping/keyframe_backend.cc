@@ -205,7 +205,7 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
   TriangulateNewLandmarks(camera_, options_.landmarks, &window_);
-  if (const std::optional<GroundPlane> ground = GroundUnderNewestKeyframe()) {
+  if (const std::optional<Plane> ground = GroundUnderNewestKeyframe()) {
     RemoveLandmarksBelowGround(*ground, options_.landmarks, &window_);
   }
   mapped->road_points = MarkRoadLandmarks(mapped);
@@ -217,7 +217,7 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
   if (last_scale_from_road_) scaled_ = true;
 }
 
-std::optional<GroundPlane> KeyframeBackend::GroundUnderNewestKeyframe() const {
+std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
   const std::deque<Keyframe>& keyframes = window_.keyframes();
   if (!scaled_ || keyframes.size() < 2) return std::nullopt;
   const Rigid3d cur_from_prev =
@@ -225,7 +225,7 @@ std::optional<GroundPlane> KeyframeBackend::GroundUnderNewestKeyframe() const {
   const std::optional<Eigen::Vector3d> normal =
       ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
   if (!normal) return std::nullopt;
-  return GroundPlane{*normal, camera_height_};
+  return Plane{*normal, camera_height_};
 }
 
 int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {

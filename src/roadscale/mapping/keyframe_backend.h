@@ -143,7 +143,7 @@ class KeyframeBackend {
   // keyframes; returns how many.
   int MarkRoadLandmarks(MappedFrame* mapped);
   // The road plane under the newest keyframe once the map is metric, else nothing.
-  std::optional<GroundPlane> GroundUnderNewestKeyframe() const;
+  std::optional<Plane> GroundUnderNewestKeyframe() const;
   // The pooled fallback of MarkRoadLandmarks (MappingOptions::road_pool_pairs).
   int MarkPooledRoadLandmarks(const Keyframe& anchor, const Rigid3d& cur_from_prev,
                               MappedFrame* mapped);

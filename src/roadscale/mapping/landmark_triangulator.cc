@@ -97,8 +97,8 @@ int TriangulateNewLandmarks(const PinholeCamera& camera, const LandmarkTriangula
   return created;
 }
 
-int RemoveLandmarksBelowGround(const GroundPlane& ground,
-                               const LandmarkTriangulatorOptions& options, LocalWindow* window) {
+int RemoveLandmarksBelowGround(const Plane& ground, const LandmarkTriangulatorOptions& options,
+                               LocalWindow* window) {
   if (options.max_depth_below_ground <= 0.0 || window->keyframes().empty()) return 0;
   // Near the horizon the flat ground says nothing: with the road normal a degree off, a tree
   // 200 m away on the horizon lies 3.5 m "below" the road. Only rays that meet the ground

@@ -6,6 +6,7 @@
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/mapping/local_window.h"
+#include "roadscale/scale/road_plane.h"
 
 #include <Eigen/Core>
 
@@ -51,18 +52,12 @@ std::optional<Eigen::Vector3d> TriangulateMultiView(const std::vector<PointView>
 int TriangulateNewLandmarks(const PinholeCamera& camera, const LandmarkTriangulatorOptions& options,
                             LocalWindow* window);
 
-// The road plane under the newest keyframe, in its camera frame and the map's units: n.X = h
-// for road points, n pointing down.
-struct GroundPlane {
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
-  double height = 0.0;
-};
-
 // Erases the tracks whose landmarks lie more than options.max_depth_below_ground heights
-// below `ground` (nothing when that option is 0), on rays that meet the ground within 20
+// below `ground`, the road plane under the newest keyframe in its camera frame and the map's
+// units (nothing when that option is 0), on rays that meet the ground within 20
 // heights of the newest keyframe: their observations too, so that they are not triangulated
 // again from the same views. Returns how many were erased.
-int RemoveLandmarksBelowGround(const GroundPlane& ground,
-                               const LandmarkTriangulatorOptions& options, LocalWindow* window);
+int RemoveLandmarksBelowGround(const Plane& ground, const LandmarkTriangulatorOptions& options,
+                               LocalWindow* window);
 
 }  // namespace roadscale

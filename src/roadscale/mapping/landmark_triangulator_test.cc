@@ -90,7 +90,7 @@ TEST(RemoveLandmarksBelowGround, ErasesTheTracksFarBelowTheRoadOnly) {
     EXPECT_EQ(TriangulateNewLandmarks(scene.camera, {}, &window), 2);
     return window;
   };
-  const GroundPlane ground{Eigen::Vector3d::UnitY(), 1.65};
+  const Plane ground{Eigen::Vector3d::UnitY(), 1.65};
   LandmarkTriangulatorOptions options;
   options.max_depth_below_ground = 1.0;
 
