@@ -230,6 +230,40 @@ TEST(LocalBundleAdjuster, DropsAPairTermFarOffTheWindow) {
   EXPECT_GE(report.removed_road_marks, 1);
 }
 
+// Pairs that agree with each other outvote the map: nine alignments that all put the camera
+// 10 % higher than the exact road landmarks do are kept (the map has drifted, as far as they
+// can tell); one alignment among them far from the rest and from the map is still dropped.
+TEST(LocalBundleAdjuster, KeepsPairTermsThatAgreeWithEachOtherButNotWithTheMap) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  ASSERT_GE(window.CountRoadLandmarks(), 100);
+  for (size_t k = 1; k < window.keyframes().size(); ++k) {
+    Keyframe& keyframe = window.keyframes()[k];
+    const Keyframe& anchor = window.keyframes()[k - 1];
+    const double baseline =
+        (Centre(keyframe.cam_from_world) - Centre(anchor.cam_from_world)).norm();
+    const double height = k == 5 ? 1.65 * 1.6 : 1.65 * 1.1;
+    keyframe.road_pair = RoadPairPlane{anchor.frame_index, height / baseline};
+  }
+  const BundleAdjustmentReport report =
+      AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+  EXPECT_EQ(report.num_road_pairs, 9);
+  EXPECT_EQ(window.CountRoadPairs(), 8);
+  EXPECT_FALSE(window.keyframes()[5].road_pair.has_value());
+  // Each kept pair is off the adjusted map by more than the outlier bound (4 sigmas of
+  // 0.02 m): the map alone would have dropped it.
+  const LocalBundleAdjusterOptions options;
+  for (size_t k = 1; k < window.keyframes().size(); ++k) {
+    const Keyframe& keyframe = window.keyframes()[k];
+    if (!keyframe.road_pair) continue;
+    const double baseline =
+        (Centre(keyframe.cam_from_world) - Centre(window.keyframes()[k - 1].cam_from_world)).norm();
+    EXPECT_GT(std::abs(keyframe.road_pair->height_per_baseline * baseline - 1.65),
+              options.road_outlier_sigmas * options.road_pair_sigma_m)
+        << "keyframe " << k;
+  }
+}
+
 TEST(LocalBundleAdjuster, FewRoadLandmarksLeaveTheScaleToTheMap) {
   const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
   LocalWindow window = testing::ExactWindow(scene, 10, 3);
