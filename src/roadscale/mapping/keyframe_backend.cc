@@ -349,10 +349,11 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   if (!(baseline > 0.0)) return;
   const std::optional<Eigen::Vector3d> expected_normal =
       ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
-  // Once the map is metric its baseline predicts |t| / h; before, the alignment searches
-  // its whole range.
+  // Once the map is metric its baseline predicts |t| / h (and where the search near it finds
+  // nothing, the whole range is searched: the map's scale may be the wrong one); before, the
+  // alignment searches its whole range.
   const double expected = scaled_ ? baseline / camera_height_ : 0.0;
-  const RoadPlaneAlignment alignment = AlignRoadPlane(
+  const RoadPlaneAlignment alignment = AlignRoadPlaneOrSearchAll(
       prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
       expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, options_.alignment);
   if (!alignment.ok) return;

@@ -382,6 +382,19 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
   return result;
 }
 
+RoadPlaneAlignment AlignRoadPlaneOrSearchAll(
+    const cv::Mat& prev_image, const cv::Mat& cur_image, const cv::Mat& prev_road_mask,
+    const cv::Mat& cur_road_mask, const PinholeCamera& camera, const Rigid3d& cur_from_prev,
+    const Eigen::Vector3d& normal_guess, double expected_baseline_over_height,
+    const RoadPlaneAlignmentOptions& options) {
+  const RoadPlaneAlignment near_expected =
+      AlignRoadPlane(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, cur_from_prev,
+                     normal_guess, expected_baseline_over_height, options);
+  if (near_expected.ok || !(expected_baseline_over_height > 0.0)) return near_expected;
+  return AlignRoadPlane(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, cur_from_prev,
+                        normal_guess, 0.0, options);
+}
+
 cv::Mat RoadRegionAhead(const PinholeCamera& camera, double max_distance, double half_width) {
   if (!(max_distance > 0.0) || !(half_width > 0.0)) {
     throw Error("RoadRegionAhead: the distance and the half width must be positive");

@@ -98,6 +98,20 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
                                   double expected_baseline_over_height,
                                   const RoadPlaneAlignmentOptions& options);
 
+// AlignRoadPlane around `expected_baseline_over_height` first, and where that finds no plane,
+// once more over the whole range (as without an expectation). The expectation comes from a
+// map whose scale may be far off - a first scale from one creeping pair in a traffic jam, 3.4
+// times the truth on a rendered one - and a search that spans only 1/1.5 to 1.5 times a wrong
+// value never meets the road's own minimum again, so nothing would correct it. Where the
+// first search succeeds, its result stands: the whole range has minima at multiples of the
+// true step on dashed lane lines (searching it always made rendered highway 1 and traffic jam
+// 2 worse; docs/benchmarks.md, "A wrong scale is no longer for good").
+RoadPlaneAlignment AlignRoadPlaneOrSearchAll(
+    const cv::Mat& prev_image, const cv::Mat& cur_image, const cv::Mat& prev_road_mask,
+    const cv::Mat& cur_road_mask, const PinholeCamera& camera, const Rigid3d& cur_from_prev,
+    const Eigen::Vector3d& normal_guess, double expected_baseline_over_height,
+    const RoadPlaneAlignmentOptions& options);
+
 // Where a level road ahead of the camera is seen when no segmentation says where the road
 // is: 255 at the pixels whose ray meets the plane y = h (camera frame, y down) no farther
 // than `max_distance` camera heights ahead and within `half_width` camera heights to either

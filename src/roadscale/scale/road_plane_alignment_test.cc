@@ -93,6 +93,35 @@ TEST(RoadPlaneAlignment, FollowsTheStretchedRoadOfAHighwayFromAPrior) {
   EXPECT_NEAR(fit.plane.height / truth, 1.0, 0.02);
 }
 
+// A prior five times the truth (a map whose scale is that far off): the search around it
+// does not reach the road's own minimum (three times still did on this pair); searching the
+// whole range once more does.
+TEST(RoadPlaneAlignment, SearchesTheWholeRangeWhereAWrongPriorFindsNothing) {
+  const RenderedPair pair = RenderPair("highway", 20, 21);
+  const double truth = TrueHeightPerBaseline(pair);
+  const double wrong_prior = 5.0 / truth;
+  const RoadPlaneAlignment near_prior = Align(pair, wrong_prior);
+  EXPECT_FALSE(near_prior.ok);
+  const RoadPlaneAlignment fit = AlignRoadPlaneOrSearchAll(
+      pair.prev_image, pair.cur_image, pair.prev_road, pair.cur_road, pair.camera,
+      pair.cur_from_prev, Eigen::Vector3d::UnitY(), wrong_prior, {});
+  ASSERT_TRUE(fit.ok);
+  EXPECT_NEAR(fit.plane.height / truth, 1.0, 0.02);
+}
+
+// Where the search near the prior succeeds, its result stands.
+TEST(RoadPlaneAlignment, KeepsTheResultNearARightPrior) {
+  const RenderedPair pair = RenderPair("highway", 20, 21);
+  const double prior = 1.2 / TrueHeightPerBaseline(pair);
+  const RoadPlaneAlignment near_prior = Align(pair, prior);
+  ASSERT_TRUE(near_prior.ok);
+  const RoadPlaneAlignment fit = AlignRoadPlaneOrSearchAll(
+      pair.prev_image, pair.cur_image, pair.prev_road, pair.cur_road, pair.camera,
+      pair.cur_from_prev, Eigen::Vector3d::UnitY(), prior, {});
+  EXPECT_EQ(fit.plane.height, near_prior.plane.height);
+  EXPECT_EQ(fit.iterations, near_prior.iterations);
+}
+
 // A crowned road falls away to both edges: the plane through the whole carriageway lies below
 // the road under the car; the road near the car's own path is the plane the car stands on.
 TEST(RoadPlaneAlignment, MeasuresTheCrownedRoadUnderTheCarFromItsOwnLane) {
