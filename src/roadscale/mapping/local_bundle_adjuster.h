@@ -27,7 +27,8 @@ struct LocalBundleAdjusterOptions {
   // (docs/benchmarks.md, "Keyframe back end").
   int min_road_landmarks = 12;
   // After a solve that set the scale, road marks whose height is off by more than this many
-  // sigmas are dropped (a kerb or a car's bottom that the selection let through).
+  // sigmas are dropped (a kerb or a car's bottom that the selection let through), and so are
+  // road pairs, unless they agree with the window's other pairs (the map drifted, not they).
   double road_outlier_sigmas = 4.0;
   // Pair term (road_pair_residual.h): sigma of a keyframe pair's camera height measured by
   // the road alignment (metres). The alignment's |t| / h is within 0.5-0.9 % (median) of the
