@@ -318,28 +318,35 @@ void RoadPlaneAlignmentOptions::Check() const {
               "must be >= 0 camera heights (0: no limit)");
 }
 
-RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_image,
-                                  const cv::Mat& prev_road_mask, const cv::Mat& cur_road_mask,
-                                  const PinholeCamera& camera, const Rigid3d& cur_from_prev,
-                                  const Eigen::Vector3d& normal_guess,
-                                  double expected_baseline_over_height,
-                                  const RoadPlaneAlignmentOptions& options) {
+namespace {
+
+void CheckAlignmentInputs(const cv::Mat& prev_image, const cv::Mat& cur_image,
+                          const cv::Mat& prev_road_mask, const cv::Mat& cur_road_mask,
+                          const PinholeCamera& camera, const RoadPlaneAlignmentOptions& options) {
   options.Check();
   CheckImage(prev_image, camera, "the previous image");
   CheckImage(cur_image, camera, "the current image");
   CheckImage(cur_road_mask, camera, "the current road mask");
   if (!prev_road_mask.empty()) CheckImage(prev_road_mask, camera, "the previous road mask");
+}
+
+bool HasMotionAndNormal(const Rigid3d& cur_from_prev, const Eigen::Vector3d& normal_guess) {
+  return cur_from_prev.translation().norm() > 0.0 && normal_guess.norm() > 0.0;
+}
+
+// The alignment on pyramids already built, from a search near `expected_baseline_over_height`
+// (0: over the whole range).
+RoadPlaneAlignment AlignOnLevels(const std::vector<Level>& levels, const Rigid3d& cur_from_prev,
+                                 const Eigen::Vector3d& normal_guess,
+                                 double expected_baseline_over_height,
+                                 const RoadPlaneAlignmentOptions& options) {
   RoadPlaneAlignment result;
-  const Eigen::Vector3d translation = cur_from_prev.translation();
-  if (!(translation.norm() > 0.0) || !(normal_guess.norm() > 0.0)) return result;
   // The current road pixels warped into the previous image: X_prev = R^T (X_cur - t), and on
   // the plane n_cur.X_cur = h_cur that is R^T (I - t n_cur^T / h_cur) X_cur, linear in
   // m = |t| n_cur / h_cur again. Driving forward, all of the road the current image sees was
   // in view before, while the previous image's nearest road has left the current one.
-  const Eigen::Vector3d u = translation.normalized();
+  const Eigen::Vector3d u = cur_from_prev.translation().normalized();
   const Eigen::Vector3d normal_in_cur = cur_from_prev.linear() * normal_guess.normalized();
-  const std::vector<Level> levels =
-      BuildLevels(cur_image, prev_image, cur_road_mask, prev_road_mask, camera, options);
 
   WarpState state;
   state.rotation = cur_from_prev.linear().transpose();  // prev_from_cur
@@ -382,17 +389,35 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
   return result;
 }
 
+}  // namespace
+
+RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_image,
+                                  const cv::Mat& prev_road_mask, const cv::Mat& cur_road_mask,
+                                  const PinholeCamera& camera, const Rigid3d& cur_from_prev,
+                                  const Eigen::Vector3d& normal_guess,
+                                  double expected_baseline_over_height,
+                                  const RoadPlaneAlignmentOptions& options) {
+  CheckAlignmentInputs(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, options);
+  if (!HasMotionAndNormal(cur_from_prev, normal_guess)) return RoadPlaneAlignment();
+  const std::vector<Level> levels =
+      BuildLevels(cur_image, prev_image, cur_road_mask, prev_road_mask, camera, options);
+  return AlignOnLevels(levels, cur_from_prev, normal_guess, expected_baseline_over_height, options);
+}
+
 RoadPlaneAlignment AlignRoadPlaneOrSearchAll(
     const cv::Mat& prev_image, const cv::Mat& cur_image, const cv::Mat& prev_road_mask,
     const cv::Mat& cur_road_mask, const PinholeCamera& camera, const Rigid3d& cur_from_prev,
     const Eigen::Vector3d& normal_guess, double expected_baseline_over_height,
     const RoadPlaneAlignmentOptions& options) {
+  CheckAlignmentInputs(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, options);
+  if (!HasMotionAndNormal(cur_from_prev, normal_guess)) return RoadPlaneAlignment();
+  // One pyramid serves both searches.
+  const std::vector<Level> levels =
+      BuildLevels(cur_image, prev_image, cur_road_mask, prev_road_mask, camera, options);
   const RoadPlaneAlignment near_expected =
-      AlignRoadPlane(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, cur_from_prev,
-                     normal_guess, expected_baseline_over_height, options);
+      AlignOnLevels(levels, cur_from_prev, normal_guess, expected_baseline_over_height, options);
   if (near_expected.ok || !(expected_baseline_over_height > 0.0)) return near_expected;
-  return AlignRoadPlane(prev_image, cur_image, prev_road_mask, cur_road_mask, camera, cur_from_prev,
-                        normal_guess, 0.0, options);
+  return AlignOnLevels(levels, cur_from_prev, normal_guess, 0.0, options);
 }
 
 cv::Mat RoadRegionAhead(const PinholeCamera& camera, double max_distance, double half_width) {
