@@ -353,9 +353,15 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   // nothing, the whole range is searched: the map's scale may be the wrong one); before, the
   // alignment searches its whole range.
   const double expected = scaled_ ? baseline / camera_height_ : 0.0;
+  // The region ahead holds whatever is there, the car in front too: a pixel that does not
+  // move with the road must not count (RoadPlaneAlignmentOptions::Loss).
+  RoadPlaneAlignmentOptions alignment_options = options_.alignment;
+  if (prev.road_mask.empty() || cur.road_mask.empty()) {
+    alignment_options.loss = RoadPlaneAlignmentOptions::Loss::kTukey;
+  }
   const RoadPlaneAlignment alignment = AlignRoadPlaneOrSearchAll(
       prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
-      expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, options_.alignment);
+      expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, alignment_options);
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
   mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);

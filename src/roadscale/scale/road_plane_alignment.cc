@@ -183,10 +183,36 @@ bool Warp(const Level& level, const Sample& sample, const Eigen::Vector3d& direc
   return true;
 }
 
-double Huber(double residual, double scale) {
-  const double a = std::abs(residual);
-  return a <= scale ? 0.5 * a * a : scale * (a - 0.5 * scale);
-}
+// The robust cost of a grey-level residual and its weight in iteratively reweighted least
+// squares (rho'(r) / r), for options.loss.
+class GreyLoss {
+ public:
+  explicit GreyLoss(const RoadPlaneAlignmentOptions& options)
+      : tukey_(options.loss == RoadPlaneAlignmentOptions::Loss::kTukey),
+        scale_(tukey_ ? options.loss_scale_grey * kTukeyOverHuber : options.loss_scale_grey) {}
+
+  double Cost(double residual) const {
+    const double a = std::abs(residual);
+    if (!tukey_) return a <= scale_ ? 0.5 * a * a : scale_ * (a - 0.5 * scale_);
+    if (a >= scale_) return scale_ * scale_ / 6.0;
+    const double u = 1.0 - (a / scale_) * (a / scale_);
+    return scale_ * scale_ / 6.0 * (1.0 - u * u * u);
+  }
+
+  double Weight(double residual) const {
+    const double a = std::abs(residual);
+    if (!tukey_) return a <= scale_ ? 1.0 : scale_ / a;
+    if (a >= scale_) return 0.0;
+    const double u = 1.0 - (a / scale_) * (a / scale_);
+    return u * u;
+  }
+
+ private:
+  // The two losses' tuning constants for 95 % efficiency on Gaussian residuals.
+  static constexpr double kTukeyOverHuber = 4.685 / 1.345;
+  bool tukey_;
+  double scale_;
+};
 
 // The best |t| / h on a logarithmic grid between `lowest` and `highest` with the normal and
 // the rotation held, each with the median grey offset; requires half of the samples to land
@@ -199,6 +225,7 @@ std::optional<Eigen::Vector3d> SearchStart(const Level& level, const std::vector
   double best_cost = 0.0;
   const double ratio = highest / lowest;
   const Eigen::Vector3d direction = state.Direction();
+  const GreyLoss loss(options);
   std::vector<double> residuals;
   for (int step = 0; step < options.search_steps; ++step) {
     const double fraction = options.search_steps > 1 ? step / (options.search_steps - 1.0) : 0.0;
@@ -214,7 +241,7 @@ std::optional<Eigen::Vector3d> SearchStart(const Level& level, const std::vector
     std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
     const double offset = residuals[residuals.size() / 2];
     double cost = 0.0;
-    for (double r : residuals) cost += Huber(r - offset, options.loss_scale_grey);
+    for (double r : residuals) cost += loss.Cost(r - offset);
     cost /= static_cast<double>(residuals.size());
     if (!best || cost < best_cost) {
       best = m;
@@ -231,10 +258,11 @@ struct LevelFit {
   int iterations = 0;
 };
 
-// Gauss-Newton with Huber weights at one level on m and the grey offset.
+// Gauss-Newton with the robust loss's weights at one level on m and the grey offset.
 LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
                   const RoadPlaneAlignmentOptions& options, WarpState* state) {
   const Eigen::Vector3d direction = state->Direction();
+  const GreyLoss loss(options);
   LevelFit fit;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
@@ -255,8 +283,7 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
       Eigen::Vector4d J;
       J.head<3>() = b.dot(direction) * sample.ray;
       J(3) = -1.0;
-      const double a = std::abs(residual);
-      const double weight = a <= options.loss_scale_grey ? 1.0 : options.loss_scale_grey / a;
+      const double weight = loss.Weight(residual);
       H.noalias() += weight * J * J.transpose();
       g.noalias() += weight * residual * J;
       squared += residual * residual;

@@ -19,7 +19,7 @@ namespace roadscale {
 // cur_from_prev and m = |t| n / h: the plane-induced homography, linear in m. The alignment
 // finds the m (with a grey offset) that
 // makes the previous image, sampled there, match the current one on every textured road
-// pixel, coarse to fine with Gauss-Newton and a Huber loss. The current image's pixels are
+// pixel, coarse to fine with Gauss-Newton and a robust loss. The current image's pixels are
 // warped into the previous one because, driving forward, all the road the current image sees
 // was in view before, while the previous image's nearest road has left the current one.
 //
@@ -43,6 +43,14 @@ struct RoadPlaneAlignmentOptions {
   // Huber scale of the grey-level residual: beyond it, a pixel (a shadow edge, a car
   // crossing the road) counts linearly.
   double loss_scale_grey = 8.0;
+  // kHuber suits pixels known to be road, where a residual beyond the scale is a shadow edge
+  // or a mask a few pixels off. kTukey (Tukey's biweight, cut off at 4.685 / 1.345 times
+  // loss_scale_grey, the same 95 % efficiency as the Huber scale) lets a pixel beyond the
+  // cut-off count not at all: for samples that are only probably road (the region ahead
+  // without segmentation), where a car ahead or a kerb fills part of them and each of their
+  // pixels would otherwise still pull with the Huber loss's full slope.
+  enum class Loss { kHuber, kTukey };
+  Loss loss = Loss::kHuber;
   // The coarsest level starts from the best of `search_steps` values of |t| / h spaced
   // evenly in logarithm between these bounds, the normal held at the guess.
   double min_baseline_over_height = 0.01;
