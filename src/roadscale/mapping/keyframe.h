@@ -18,6 +18,13 @@ namespace roadscale {
 struct RoadPairPlane {
   int anchor_frame = 0;  // the earlier keyframe, in whose frame the plane is
   double height_per_baseline = 0.0;
+  // Measured on a road mask, or on the region ahead without segmentation.
+  bool on_road_mask = true;
+  // False while a pair of the region ahead disagrees with both the adjusted map and the
+  // window's other pairs: no term in the adjustment, but it still votes, and it comes back
+  // when enough pairs agree with it (local_bundle_adjuster.cc, ReviewRoadPairs). A pair
+  // measured on a road mask is dropped instead.
+  bool in_adjustment = true;
 };
 
 // A frame kept in the local window: its pose, what it saw, and its road mask (for the road

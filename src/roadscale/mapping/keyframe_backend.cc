@@ -364,13 +364,14 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
       expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, alignment_options);
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
+  cur.road_pair->on_road_mask = !prev.road_mask.empty() && !cur.road_mask.empty();
   mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);
 }
 
 std::vector<double> KeyframeBackend::RoadPairHeights() const {
   std::vector<double> heights;
   for (const Keyframe& keyframe : window_.keyframes()) {
-    if (!keyframe.road_pair) continue;
+    if (!keyframe.road_pair || !keyframe.road_pair->in_adjustment) continue;
     const Keyframe* anchor = window_.FindKeyframe(keyframe.road_pair->anchor_frame);
     if (anchor == nullptr) continue;
     heights.push_back(keyframe.road_pair->height_per_baseline *

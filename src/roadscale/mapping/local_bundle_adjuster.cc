@@ -1,5 +1,6 @@
 #include "roadscale/mapping/local_bundle_adjuster.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -29,18 +30,26 @@ double ReprojectionError(const PinholeCamera& camera, const Rigid3d& cam_from_wo
   return (camera.Project(point_cam) - observed).norm();
 }
 
-// Road pairs whose camera heights the window's pairs can outvote together: one wrong pair
-// cannot set the median of three.
+// Road pairs that must agree (within the outlier bound of their median) to outvote the map:
+// one wrong pair cannot set the median of three.
 constexpr size_t kMinRoadPairsToOutvoteTheMap = 3;
 
-// Drops the road pairs whose camera height under the adjusted window (metres: height per
-// baseline times the window's baseline) is more than `max_offset` off h0, unless it is within
-// `max_offset` of the median of the window's pairs. The map's scale drifts between road fixes
-// (a grade change bends the road under the sparse road points, a car cutting in hides the
-// road): pairs that all disagree with the map by the same amount are the map's error, not
-// theirs, and dropping them kept the drift (rendered hills 1: 1.42 % t_err with the map alone,
-// 0.72 % with the pairs' vote; docs/benchmarks.md, "The pairs outvote the map").
-int RemoveRoadPairOutliers(double camera_height, double max_offset, LocalWindow* window) {
+// Takes out of the adjustment the road pairs whose camera height under the adjusted window
+// (metres: height per baseline times the window's baseline) is more than `max_offset` off h0,
+// unless it is within `max_offset` of the median of the window's pairs and at least
+// kMinRoadPairsToOutvoteTheMap pairs are. The map's scale drifts between road fixes (a grade
+// change bends the road under the sparse road points, a car cutting in hides the road): pairs
+// that all disagree with the map by the same amount are the map's error, not theirs, and
+// dropping them kept the drift (rendered hills 1: 1.42 % t_err with the map alone, 0.72 % with
+// the pairs' vote; docs/benchmarks.md, "The pairs outvote the map").
+//
+// A pair measured on a road mask that is taken out is dropped: the mask's road landmarks are
+// road too and rarely all wrong together. A pair measured on the region ahead without
+// segmentation (RoadPairPlane::on_road_mask false) stays as a reading that votes and comes
+// back when enough pairs agree with it: there the sparse road landmarks are whatever stands
+// below the horizon, the map's first scale may be far off (rendered highway 3 a quarter of its
+// length), and each pair that would correct it comes alone. Returns the pairs taken out.
+int ReviewRoadPairs(double camera_height, double max_offset, LocalWindow* window) {
   std::vector<std::pair<Keyframe*, double>> pairs;
   for (Keyframe& keyframe : window->keyframes()) {
     if (!keyframe.road_pair) continue;
@@ -53,18 +62,24 @@ int RemoveRoadPairOutliers(double camera_height, double max_offset, LocalWindow*
   }
   std::vector<double> heights;
   for (const auto& pair : pairs) heights.push_back(pair.second);
-  const bool pairs_vote = pairs.size() >= kMinRoadPairsToOutvoteTheMap;
-  const double median = pairs_vote ? Median(heights) : camera_height;
-  int removed = 0;
+  const double median = heights.empty() ? camera_height : Median(heights);
+  // The median of readings that all disagree is one of them: only a consensus votes.
+  const size_t agreeing =
+      static_cast<size_t>(std::count_if(heights.begin(), heights.end(), [&](double h) {
+        return std::abs(h - median) <= max_offset;
+      }));
+  const bool pairs_vote = agreeing >= kMinRoadPairsToOutvoteTheMap;
+  int taken_out = 0;
   for (const auto& [keyframe, height] : pairs) {
+    RoadPairPlane& pair = *keyframe->road_pair;
     const bool off_the_map = std::abs(height - camera_height) > max_offset;
     const bool off_the_pairs = !pairs_vote || std::abs(height - median) > max_offset;
-    if (off_the_map && off_the_pairs) {
-      keyframe->road_pair.reset();
-      ++removed;
-    }
+    const bool in_adjustment = !(off_the_map && off_the_pairs);
+    if (pair.in_adjustment && !in_adjustment) ++taken_out;
+    pair.in_adjustment = in_adjustment;
+    if (!in_adjustment && pair.on_road_mask) keyframe->road_pair.reset();
   }
-  return removed;
+  return taken_out;
 }
 
 }  // namespace
@@ -140,7 +155,7 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
         &height_loss, poses[anchor->second].data(), points[id].data());
   }
   for (size_t k = 0; k < keyframes.size(); ++k) {
-    if (!keyframes[k].road_pair) continue;
+    if (!keyframes[k].road_pair || !keyframes[k].road_pair->in_adjustment) continue;
     const auto anchor = pose_of_frame.find(keyframes[k].road_pair->anchor_frame);
     if (anchor == pose_of_frame.end()) continue;
     problem.AddResidualBlock(RoadPairResidual::Create(keyframes[k].road_pair->height_per_baseline,
@@ -197,7 +212,10 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
         ++report.removed_road_marks;
       }
     }
-    report.removed_road_marks += RemoveRoadPairOutliers(
+  }
+  // Also where every pair is out of the adjustment: they still vote against the map.
+  if (report.scale_from_road || window->CountRoadPairReadings() > report.num_road_pairs) {
+    report.removed_road_marks += ReviewRoadPairs(
         camera_height, options.road_outlier_sigmas * options.road_pair_sigma_m, window);
   }
   report.milliseconds =

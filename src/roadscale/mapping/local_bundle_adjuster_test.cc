@@ -217,17 +217,47 @@ TEST_P(LocalBundleAdjusterScale, ThePairTermMakesAWrongScaleMetric) {
   EXPECT_LT(MaxCentreError(window, scene), 0.1);
 }
 
-// A pair term far off the adjusted window (a wrong alignment) is dropped after the solve.
+// A pair term far off the adjusted window (a wrong alignment) is dropped after the solve; one
+// measured on the region ahead without segmentation stays as a reading outside the adjustment.
 TEST(LocalBundleAdjuster, DropsAPairTermFarOffTheWindow) {
   const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  for (const bool on_road_mask : {true, false}) {
+    LocalWindow window = testing::ExactWindow(scene, 10, 3);
+    Keyframe& keyframe = window.keyframes()[5];
+    keyframe.road_pair = RoadPairPlane{window.keyframes()[4].frame_index, 1.65 * 1.5 / 3.0};
+    keyframe.road_pair->on_road_mask = on_road_mask;
+    const BundleAdjustmentReport report =
+        AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+    EXPECT_EQ(report.num_road_pairs, 1);
+    EXPECT_EQ(window.CountRoadPairs(), 0);
+    EXPECT_EQ(window.CountRoadPairReadings(), on_road_mask ? 0 : 1);
+    EXPECT_GE(report.removed_road_marks, 1);
+  }
+}
+
+// A pair of the region ahead taken out alone still votes: when two more pairs come that agree
+// with it (the map's scale is off), the three outvote the map and all three are in the
+// adjustment.
+TEST(LocalBundleAdjuster, PutsARegionPairTermBackWhenLaterPairsAgreeWithIt) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
   LocalWindow window = testing::ExactWindow(scene, 10, 3);
-  Keyframe& keyframe = window.keyframes()[5];
-  keyframe.road_pair = RoadPairPlane{window.keyframes()[4].frame_index, 1.65 * 1.5 / 3.0};
-  const BundleAdjustmentReport report =
-      AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
-  EXPECT_EQ(report.num_road_pairs, 1);
-  EXPECT_FALSE(window.keyframes()[5].road_pair.has_value());
-  EXPECT_GE(report.removed_road_marks, 1);
+  ASSERT_GE(window.CountRoadLandmarks(), 100);
+  const auto add_pair = [&window](size_t k) {
+    Keyframe& keyframe = window.keyframes()[k];
+    const Keyframe& anchor = window.keyframes()[k - 1];
+    const double baseline =
+        (Centre(keyframe.cam_from_world) - Centre(anchor.cam_from_world)).norm();
+    keyframe.road_pair = RoadPairPlane{anchor.frame_index, 1.65 * 1.1 / baseline};
+    keyframe.road_pair->on_road_mask = false;
+  };
+  add_pair(3);
+  AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+  ASSERT_FALSE(window.keyframes()[3].road_pair->in_adjustment);
+  add_pair(4);
+  add_pair(5);
+  AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+  EXPECT_EQ(window.CountRoadPairs(), 3);
+  EXPECT_TRUE(window.keyframes()[3].road_pair->in_adjustment);
 }
 
 // Pairs that agree with each other outvote the map: nine alignments that all put the camera
@@ -262,6 +292,26 @@ TEST(LocalBundleAdjuster, KeepsPairTermsThatAgreeWithEachOtherButNotWithTheMap) 
               options.road_outlier_sigmas * options.road_pair_sigma_m)
         << "keyframe " << k;
   }
+}
+
+// Three alignments of the region ahead far off the map and off each other (a car in the
+// region): their median is one of them, not a consensus, and none of them outvotes the map.
+TEST(LocalBundleAdjuster, PairsThatDisagreeWithEachOtherDoNotOutvoteTheMap) {
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.3);
+  LocalWindow window = testing::ExactWindow(scene, 10, 3);
+  ASSERT_GE(window.CountRoadLandmarks(), 100);
+  const double factors[] = {3.9, 4.7, 5.8};
+  for (size_t k = 3; k <= 5; ++k) {
+    Keyframe& keyframe = window.keyframes()[k];
+    const Keyframe& anchor = window.keyframes()[k - 1];
+    const double baseline =
+        (Centre(keyframe.cam_from_world) - Centre(anchor.cam_from_world)).norm();
+    keyframe.road_pair = RoadPairPlane{anchor.frame_index, 1.65 * factors[k - 3] / baseline};
+    keyframe.road_pair->on_road_mask = false;
+  }
+  AdjustLocalWindow(scene.camera, 1.65, LocalBundleAdjusterOptions(), &window);
+  EXPECT_EQ(window.CountRoadPairs(), 0);
+  EXPECT_EQ(window.CountRoadPairReadings(), 3);
 }
 
 TEST(LocalBundleAdjuster, FewRoadLandmarksLeaveTheScaleToTheMap) {

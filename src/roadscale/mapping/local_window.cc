@@ -26,6 +26,17 @@ int LocalWindow::CountRoadLandmarks() const {
 int LocalWindow::CountRoadPairs() const {
   int count = 0;
   for (const Keyframe& keyframe : keyframes_) {
+    if (keyframe.road_pair && keyframe.road_pair->in_adjustment &&
+        FindKeyframe(keyframe.road_pair->anchor_frame) != nullptr) {
+      ++count;
+    }
+  }
+  return count;
+}
+
+int LocalWindow::CountRoadPairReadings() const {
+  int count = 0;
+  for (const Keyframe& keyframe : keyframes_) {
     if (keyframe.road_pair && FindKeyframe(keyframe.road_pair->anchor_frame) != nullptr) ++count;
   }
   return count;

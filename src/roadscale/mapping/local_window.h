@@ -25,8 +25,10 @@ class LocalWindow {
   int CountObservations(int64_t track_id) const;
   // Road landmarks whose anchor keyframe is in the window.
   int CountRoadLandmarks() const;
-  // Keyframes with a road alignment whose earlier keyframe is still in the window.
+  // Keyframes with a road alignment whose earlier keyframe is still in the window: those in
+  // the adjustment (RoadPairPlane::in_adjustment), or all of them.
   int CountRoadPairs() const;
+  int CountRoadPairReadings() const;
 
   void AddKeyframe(Keyframe keyframe) { keyframes_.push_back(std::move(keyframe)); }
   // Drops the oldest keyframe, then the landmarks left with fewer than two observations and
