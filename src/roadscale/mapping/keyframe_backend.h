@@ -55,11 +55,12 @@ struct MappingOptions {
   // either side (40 and 2.5: 66 m and 4.1 m at h0 = 1.65 m, the own lane and half of each
   // neighbour; at full resolution the alignment's own lane limit applies as well), with
   // Tukey's biweight, so that the car ahead and the parked cars in the region do not count.
-  // Without segmentation it took KITTI 00/200 from 2.29 % to 1.66 %, six rendered town drives
-  // from a mean of 0.58 % to 0.52 %, and gave the rendered highways and jams a scale where
-  // the sparse road points alone lost it; with the Huber loss the parked cars and the car
-  // ahead made the town drives worse (mean 0.77 %; docs/benchmarks.md, "The road ahead
-  // without segmentation"). 0 turns it off.
+  // Without segmentation it took KITTI 00/200 from 2.29 % to 1.76 % (1.56 % with the region's
+  // pairs keeping their vote, local_bundle_adjuster.cc), six rendered town drives from a mean
+  // of 0.58 % to 0.50 %, and gave the rendered highways and jams a scale where the sparse road
+  // points alone lost it; with the Huber loss the parked cars and the car ahead made the town
+  // drives worse (mean 0.77 %; docs/benchmarks.md, "The road ahead without segmentation").
+  // 0 turns it off.
   double road_region_max_distance = 40.0;
   double road_region_half_width = 2.5;
   KeyframeSelectorOptions keyframes;
