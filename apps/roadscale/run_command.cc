@@ -328,7 +328,9 @@ void RegisterRunCommand(CLI::App& app) {
                       "instead of a network");
   command->add_flag("--no-segmentation", arguments->no_segmentation,
                     "Run without segmentation: features anywhere, every triangulated point a "
-                    "road candidate (the paper's ablation)");
+                    "road candidate (the paper's ablation); the keyframe host aligns the road "
+                    "where a level road lies ahead instead "
+                    "(Mapping.road_alignment_region_distance)");
   command->add_option("--scale", arguments->scale,
                       "Where each step's length comes from: road = the road plane and h0 (the "
                       "paper's method), oracle = the ground truth's step length (default: road, "
