@@ -355,16 +355,15 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   const double expected = scaled_ ? baseline / camera_height_ : 0.0;
   // The region ahead holds whatever is there, the car in front too: a pixel that does not
   // move with the road must not count (RoadPlaneAlignmentOptions::Loss).
+  const bool on_road_mask = !prev.road_mask.empty() && !cur.road_mask.empty();
   RoadPlaneAlignmentOptions alignment_options = options_.alignment;
-  if (prev.road_mask.empty() || cur.road_mask.empty()) {
-    alignment_options.loss = RoadPlaneAlignmentOptions::Loss::kTukey;
-  }
+  if (!on_road_mask) alignment_options.loss = RoadPlaneAlignmentOptions::Loss::kTukey;
   const RoadPlaneAlignment alignment = AlignRoadPlaneOrSearchAll(
       prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
       expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, alignment_options);
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
-  cur.road_pair->on_road_mask = !prev.road_mask.empty() && !cur.road_mask.empty();
+  cur.road_pair->on_road_mask = on_road_mask;
   mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);
 }
 

@@ -23,21 +23,17 @@ int LocalWindow::CountRoadLandmarks() const {
   return count;
 }
 
-int LocalWindow::CountRoadPairs() const {
+int LocalWindow::CountRoadPairs() const { return CountRoadPairsIf(true); }
+
+int LocalWindow::CountRoadPairReadings() const { return CountRoadPairsIf(false); }
+
+int LocalWindow::CountRoadPairsIf(bool in_adjustment_only) const {
   int count = 0;
   for (const Keyframe& keyframe : keyframes_) {
-    if (keyframe.road_pair && keyframe.road_pair->in_adjustment &&
+    if (keyframe.road_pair && (!in_adjustment_only || keyframe.road_pair->in_adjustment) &&
         FindKeyframe(keyframe.road_pair->anchor_frame) != nullptr) {
       ++count;
     }
-  }
-  return count;
-}
-
-int LocalWindow::CountRoadPairReadings() const {
-  int count = 0;
-  for (const Keyframe& keyframe : keyframes_) {
-    if (keyframe.road_pair && FindKeyframe(keyframe.road_pair->anchor_frame) != nullptr) ++count;
   }
   return count;
 }

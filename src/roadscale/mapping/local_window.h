@@ -45,6 +45,8 @@ class LocalWindow {
   void Rescale(double factor);
 
  private:
+  int CountRoadPairsIf(bool in_adjustment_only) const;
+
   std::deque<Keyframe> keyframes_;
   std::map<int64_t, Landmark> landmarks_;
 };
