@@ -104,7 +104,13 @@ FrameLocalization LocalizeFrame(const std::vector<TrackObservation>& observation
   result.num_landmarks = static_cast<int>(matches.size());
   if (result.num_landmarks < options.min_landmarks) return result;
 
-  Rigid3d pose = RefinePose(matches, camera, initial_cam_from_world, options);
+  // One point behind the predicted camera would fail the refinement's first evaluation, and
+  // Ceres would leave the whole pose at the prediction; those points only join the RANSAC.
+  std::vector<Match> in_front;
+  for (const Match& match : matches) {
+    if ((initial_cam_from_world * match.point).z() > kMinDepthInFront) in_front.push_back(match);
+  }
+  Rigid3d pose = RefinePose(in_front, camera, initial_cam_from_world, options);
   std::vector<Match> inliers = Inliers(matches, camera, pose, options.inlier_threshold_px);
   if (static_cast<double>(inliers.size()) < options.min_inlier_ratio * matches.size()) {
     const std::optional<Rigid3d> ransac = PnpRansac(matches, camera, options);

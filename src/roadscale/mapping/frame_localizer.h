@@ -13,7 +13,7 @@ namespace roadscale {
 
 struct FrameLocalizerOptions {
   // Fewer landmarks seen, or fewer inliers after the refinement: not localised (the caller
-  // falls back on the two-view motion).
+  // keeps its guess: the predicted pose, or the arrival pose relative to the keyframe).
   int min_landmarks = 12;
   // Motion-only refinement: Cauchy loss of this scale (pixels) - it must shed wrong matches
   // that the starting pose does not yet tell apart - and at most this many iterations.

@@ -62,6 +62,22 @@ TEST(LocalizeFrame, FallsBackOnRansacWhenThePredictionIsWrong) {
   EXPECT_LT(c.CentreError(result.cam_from_world), 0.02);
 }
 
+TEST(LocalizeFrame, ALandmarkBehindThePredictionDoesNotStopTheRefinement) {
+  // A wrong landmark behind the predicted camera fails the reprojection's evaluation; among
+  // the refinement's residuals it would leave the pose at the prediction.
+  LocalizationCase c(0.0);
+  const Rigid3d truth = c.scene.cam_from_world[c.frame];
+  const int64_t wrong = c.observations.front().track_id;
+  c.landmarks[wrong].position = truth.inverse() * Eigen::Vector3d(0.5, 0.5, -4.0);
+  const Rigid3d guess =
+      MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.05, 0.0, 0.15)) * truth;
+  const FrameLocalization result =
+      LocalizeFrame(c.observations, c.landmarks, c.scene.camera, guess, {});
+  ASSERT_TRUE(result.ok);
+  EXPECT_GT(c.CentreError(guess), 0.15);
+  EXPECT_LT(c.CentreError(result.cam_from_world), 0.02);
+}
+
 TEST(LocalizeFrame, TooFewLandmarksIsNoPose) {
   const LocalizationCase c(0.0);
   std::vector<TrackObservation> few(c.observations.begin(), c.observations.begin() + 8);

@@ -92,13 +92,14 @@ std::string MappingModeName(MappingOptions::Mode mode) {
 KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_height,
                                  const MappingOptions& options,
                                  const ScaleEstimatorOptions& selection,
-                                 int max_frames_before_scale)
+                                 const TwoViewMotionOptions& motion, int max_frames_before_scale)
     : camera_(camera),
       camera_height_(camera_height),
       options_(options),
       max_frames_before_scale_(max_frames_before_scale),
       selection_(camera,
-                 SelectionOptions(selection, camera_height, options.road_min_points_per_pair)) {
+                 SelectionOptions(selection, camera_height, options.road_min_points_per_pair)),
+      motion_options_(motion) {
   camera_.Check();
   options_.Check();
   if (options_.road_region_max_distance > 0.0) {
@@ -108,39 +109,39 @@ KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_heig
 }
 
 Rigid3d KeyframeBackend::PredictPose(const TwoViewMotion& motion) const {
-  Rigid3d step = last_step_;
-  const double length = last_step_.translation().norm();
+  Rigid3d cur_from_prev = last_cur_from_prev_;
+  const double length = last_cur_from_prev_.translation().norm();
   switch (motion.status) {
     case MotionStatus::kStationary:
     case MotionStatus::kFirstFrame:
-      step = Rigid3d::Identity();
+      cur_from_prev = Rigid3d::Identity();
       break;
     case MotionStatus::kOk:
-      step = MakeRigid3d(motion.rotation, motion.direction * (length > 0.0 ? length : 1.0));
+      cur_from_prev =
+          MakeRigid3d(motion.rotation, motion.direction * (length > 0.0 ? length : 1.0));
       break;
     case MotionStatus::kPureRotation:
-      step = MakeRigid3d(motion.rotation, last_step_.translation());
+      cur_from_prev = MakeRigid3d(motion.rotation, last_cur_from_prev_.translation());
       break;
     default:
       break;
   }
-  return step * last_cam_from_world_;
+  return cur_from_prev * last_cam_from_world_;
 }
 
 bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const {
-  const Keyframe& first = window_.keyframes().front();
+  const Keyframe& last = window_.keyframes().back();
   std::vector<Correspondence> correspondences;
   for (const TrackObservation& observation : frontend.observations) {
-    const auto seen = first.observations.find(observation.track_id);
-    if (seen != first.observations.end()) {
+    const auto seen = last.observations.find(observation.track_id);
+    if (seen != last.observations.end()) {
       correspondences.push_back({observation.track_id, seen->second, observation.pixel});
     }
   }
-  TwoViewMotionOptions motion_options;
-  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, motion_options);
+  const TwoViewMotion motion = EstimateTwoViewMotion(correspondences, camera_, motion_options_);
   if (motion.status != MotionStatus::kOk) return false;
-  const double predicted = (Centre(*cam_from_world) - Centre(first.cam_from_world)).norm();
-  *cam_from_world = motion.CurFromPrev(predicted > 0.0 ? predicted : 1.0) * first.cam_from_world;
+  const double predicted = (Centre(*cam_from_world) - Centre(last.cam_from_world)).norm();
+  *cam_from_world = motion.CurFromPrev(predicted > 0.0 ? predicted : 1.0) * last.cam_from_world;
   return true;
 }
 
@@ -188,7 +189,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
     cam_from_world = window_.keyframes().back().cam_from_world;
   }
 
-  if (!mapped.stationary) last_step_ = cam_from_world * last_cam_from_world_.inverse();
+  if (!mapped.stationary) last_cur_from_prev_ = cam_from_world * last_cam_from_world_.inverse();
   last_cam_from_world_ = cam_from_world;
   pending.keyframe_before = window_.keyframes().back().frame_index;
   pending.keyframe_from_cam = window_.keyframes().back().cam_from_world * cam_from_world.inverse();
@@ -225,7 +226,8 @@ std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
   const std::optional<Eigen::Vector3d> normal =
       ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
   if (!normal) return std::nullopt;
-  return Plane{*normal, camera_height_};
+  // ExpectedRoadNormal is in the earlier keyframe's frame; the check is in the newest one's.
+  return Plane{cur_from_prev.linear() * *normal, camera_height_};
 }
 
 int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
@@ -391,8 +393,8 @@ void KeyframeBackend::ScaleMapOnFirstRoad() {
   for (PendingFrame& frame : pending_) {
     frame.keyframe_from_cam.translation() *= factor;
   }
-  last_step_.translation() *= factor;
-  last_cam_from_world_ = window_.keyframes().back().cam_from_world;
+  // The frame before this one, from which the next step is measured, moves with the map.
+  last_cam_from_world_ = window_.RescaledPose(last_cam_from_world_, factor);
 }
 
 MappedFrame::Scale KeyframeBackend::CurrentScale() const {
@@ -419,9 +421,10 @@ void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
     mapped.scale = CurrentScale();
     const Keyframe* own = window_.FindKeyframe(mapped.frame_index);
     const Keyframe* before = window_.FindKeyframe(frame.keyframe_before);
-    if (!has_output_ || own != nullptr) {
-      const Rigid3d& pose = own != nullptr ? own->cam_from_world : Rigid3d::Identity();
-      mapped.world_from_cam = pose.inverse();
+    // The first frame is a keyframe and leaves before its keyframe does: every frame after it
+    // has an output before it.
+    if (own != nullptr) {
+      mapped.world_from_cam = own->cam_from_world.inverse();
       mapped.localization = "keyframe";
     } else if (mapped.stationary) {
       mapped.world_from_cam = last_output_world_from_cam_;
@@ -429,7 +432,7 @@ void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
     } else {
       // The arrival pose relative to its keyframe, in the scale of the interval then.
       Rigid3d keyframe_from_cam = frame.keyframe_from_cam;
-      Rigid3d guess = last_output_world_from_cam_.inverse();
+      Rigid3d guess_cam_from_world = last_output_world_from_cam_.inverse();
       if (before != nullptr) {
         const auto next =
             std::find_if(window_.keyframes().begin(), window_.keyframes().end(),
@@ -439,14 +442,15 @@ void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
               (Centre(next->cam_from_world) - Centre(before->cam_from_world)).norm() /
               next->baseline_at_creation;
         }
-        guess = (before->cam_from_world.inverse() * keyframe_from_cam).inverse();
+        guess_cam_from_world = (before->cam_from_world.inverse() * keyframe_from_cam).inverse();
       }
-      const FrameLocalization localization = LocalizeFrame(frame.observations, window_.landmarks(),
-                                                           camera_, guess, options_.localization);
-      mapped.world_from_cam = (localization.ok ? localization.cam_from_world : guess).inverse();
+      const FrameLocalization localization =
+          LocalizeFrame(frame.observations, window_.landmarks(), camera_, guess_cam_from_world,
+                        options_.localization);
+      mapped.world_from_cam =
+          (localization.ok ? localization.cam_from_world : guess_cam_from_world).inverse();
       mapped.localization = localization.ok ? "map" : "interpolated";
     }
-    has_output_ = true;
     last_output_world_from_cam_ = mapped.world_from_cam;
     out->push_back(std::move(mapped));
     pending_.pop_front();

@@ -81,8 +81,9 @@ struct MappedFrame {
   Rigid3d world_from_cam = Rigid3d::Identity();
   bool keyframe = false;
   bool stationary = false;
-  // The map's scale when the pose was written: from the road landmarks of the window
-  // (scaled), carried by the map from earlier road landmarks (held), or none yet (unscaled).
+  // The map's scale when the pose was written: from the window's road landmarks or road
+  // pairs (kRoad, "road" in frames.csv), carried by the map from earlier ones (kCarried,
+  // "carried"), or none yet (kNone, "none").
   enum class Scale { kRoad, kCarried, kNone } scale = Scale::kNone;
   // How the pose was found when the frame was written: "keyframe" (bundle adjusted), "map"
   // (localised against the final landmarks), "interpolated" (its arrival pose relative to
@@ -107,11 +108,13 @@ std::string FormatMappedFrameCsv(const MappedFrame& frame);
 class KeyframeBackend {
  public:
   // `camera_height` is h0; `selection` the paper's road selection (its RANSAC minimum is
-  // replaced by options.road_min_points_per_pair); `max_frames_before_scale`: frames kept
-  // waiting for the map's first scale before the window slides without one (0: never wait).
-  // Throws Error on invalid options or camera.
+  // replaced by options.road_min_points_per_pair); `motion` the frontend's two-view motion
+  // options, which the map's first keyframe pair is measured with; `max_frames_before_scale`:
+  // frames kept waiting for the map's first scale before the window slides without one (0:
+  // never wait). Throws Error on invalid options or camera.
   KeyframeBackend(const PinholeCamera& camera, double camera_height, const MappingOptions& options,
-                  const ScaleEstimatorOptions& selection, int max_frames_before_scale);
+                  const ScaleEstimatorOptions& selection, const TwoViewMotionOptions& motion,
+                  int max_frames_before_scale);
 
   // Takes the frontend's result for the next frame and its road mask (empty: none). Returns
   // the frames whose poses became final, in order.
@@ -134,8 +137,9 @@ class KeyframeBackend {
   };
 
   Rigid3d PredictPose(const TwoViewMotion& motion) const;
-  // The first keyframe pair has no map to localise against: its relative pose is the two
-  // frames' own two-view motion, at the predicted distance. False when that fails.
+  // A keyframe while the map is empty (the first pair, or after every landmark was lost) has
+  // nothing to localise against: its pose relative to the last keyframe is the two frames'
+  // own two-view motion, at the predicted distance. False when that fails.
   bool BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const;
   void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
                    const Rigid3d& cam_from_world, MappedFrame* mapped);
@@ -170,17 +174,17 @@ class KeyframeBackend {
   MappingOptions options_;
   int max_frames_before_scale_;
   ScaleEstimator selection_;
+  TwoViewMotionOptions motion_options_;
   LocalWindow window_;
   cv::Mat road_region_;  // RoadRegionAhead, or empty when off
   std::deque<PendingFrame> pending_;
   // Track ids of the road candidates of the last road_pool_pairs keyframe pairs.
   std::deque<std::vector<int64_t>> recent_road_candidates_;
   Rigid3d last_cam_from_world_ = Rigid3d::Identity();
-  Rigid3d last_step_ = Rigid3d::Identity();  // cur_from_prev of the last moving frame
+  Rigid3d last_cur_from_prev_ = Rigid3d::Identity();  // cur_from_prev of the last moving frame
   bool has_frame_ = false;
   bool scaled_ = false;                // the road has scaled the map at least once
   bool last_scale_from_road_ = false;  // ... in the last adjustment
-  bool has_output_ = false;
   Rigid3d last_output_world_from_cam_ = Rigid3d::Identity();
 };
 

@@ -24,7 +24,8 @@ cv::Mat RoadMask(const testing::MappingTestScene& scene, int frame) {
 
 std::vector<MappedFrame> RunBackend(const testing::MappingTestScene& scene, double noise_px,
                                     const MappingOptions& options = {}, bool road_masks = false) {
-  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(), 100);
+  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
+                          TwoViewMotionOptions(), 100);
   std::vector<MappedFrame> mapped;
   for (int f = 0; f < static_cast<int>(scene.cam_from_world.size()); ++f) {
     const cv::Mat mask = road_masks ? RoadMask(scene, f) : cv::Mat();
@@ -140,7 +141,7 @@ TEST(KeyframeBackend, KeepsNoLandmarksFarBelowTheRoadOnceMetric) {
   }
   const auto below_ground_landmarks = [&](const MappingOptions& options) {
     KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
-                            100);
+                            TwoViewMotionOptions(), 100);
     int count = 0;
     for (int f = 0; f < 60; ++f) {
       backend.AddFrame(scene.Frontend(f, 0.2, 3), RoadMask(scene, f));
@@ -161,7 +162,8 @@ TEST(KeyframeBackend, TheWindowStaysBounded) {
   const auto scene = testing::MappingTestScene::Street(100, 1.0, 0.1);
   MappingOptions options;
   options.window_size = 6;
-  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(), 100);
+  KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
+                          TwoViewMotionOptions(), 100);
   size_t largest = 0;
   for (int f = 0; f < 100; ++f) {
     backend.AddFrame(scene.Frontend(f, 0.2, 3), cv::Mat());

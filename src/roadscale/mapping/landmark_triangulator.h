@@ -40,8 +40,9 @@ struct PointView {
   Eigen::Vector2d pixel;
 };
 
-// The point seen in `views` (at least two): triangulated linearly from the two views with the
-// widest ray angle, then checked in every view (in front of the camera, reprojection error).
+// The point seen in `views` (at least two, in order of time): triangulated linearly from the
+// earliest view and the later one whose ray makes the widest angle with it, then checked in
+// every view (in front of the camera, reprojection error).
 // Nothing when the angle or a view fails the options.
 std::optional<Eigen::Vector3d> TriangulateMultiView(const std::vector<PointView>& views,
                                                     const PinholeCamera& camera,

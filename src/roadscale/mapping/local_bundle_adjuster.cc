@@ -26,7 +26,7 @@ namespace {
 double ReprojectionError(const PinholeCamera& camera, const Rigid3d& cam_from_world,
                          const Eigen::Vector3d& point_world, const Eigen::Vector2d& observed) {
   const Eigen::Vector3d point_cam = cam_from_world * point_world;
-  if (point_cam.z() <= 1e-6) return std::numeric_limits<double>::infinity();
+  if (point_cam.z() < kMinDepthInFront) return std::numeric_limits<double>::infinity();
   return (camera.Project(point_cam) - observed).norm();
 }
 
@@ -162,11 +162,15 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
                                                       camera_height, options.road_pair_sigma_m),
                              &height_loss, poses[anchor->second].data(), poses[k].data());
   }
-  for (size_t k = 0; k < poses.size(); ++k) {
+  // The gauge: the oldest keyframe in the problem is held, and the next one too while the
+  // road does not set the scale. A keyframe left without residuals is not in the problem, so
+  // they are counted among those that are.
+  const int keyframes_held = report.scale_from_road ? 1 : 2;
+  int held = 0;
+  for (size_t k = 0; k < poses.size() && held < keyframes_held; ++k) {
     if (!problem.HasParameterBlock(poses[k].data())) continue;
-    if (k == 0 || (k == 1 && !report.scale_from_road)) {
-      problem.SetParameterBlockConstant(poses[k].data());
-    }
+    problem.SetParameterBlockConstant(poses[k].data());
+    ++held;
   }
 
   ceres::Solver::Options solver_options;
@@ -177,7 +181,7 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
   report.ran = true;
-  report.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
   report.initial_cost = summary.initial_cost;
   report.final_cost = summary.final_cost;
 

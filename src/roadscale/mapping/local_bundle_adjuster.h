@@ -19,16 +19,18 @@ struct LocalBundleAdjusterOptions {
   // (metres) and its Huber scale in sigmas.
   double camera_height_sigma_m = 0.05;
   double camera_height_loss = 1.0;
-  // With at least this many road landmarks in the window the road decides the window's scale
-  // (only the oldest keyframe is fixed); with fewer, the two oldest keyframes are fixed and
-  // the scale is the one the map carries. 12 is what the paper asks of one road plane
-  // (ransac_min_points). 24 left the rendered traffic jam without any scale (length 5.9 times
-  // the truth) and drifted on the highway; 12 gives 0.980 and 3.1 % there and ties elsewhere
-  // (docs/benchmarks.md, "Keyframe back end").
+  // With at least this many road landmarks in the window, or any road pair in the
+  // adjustment, the road decides the window's scale (only the oldest keyframe is fixed);
+  // otherwise the two oldest keyframes are fixed and the scale is the one the map carries. 12 is
+  // what the paper asks of one road plane (ransac_min_points). 24 left the rendered traffic jam
+  // without any scale (length 5.9 times the truth) and drifted on the highway; 12 gives 0.980
+  // and 3.1 % there and ties elsewhere (docs/benchmarks.md, "Keyframe back end").
   int min_road_landmarks = 12;
   // After a solve that set the scale, road marks whose height is off by more than this many
-  // sigmas are dropped (a kerb or a car's bottom that the selection let through), and so are
-  // road pairs, unless they agree with the window's other pairs (the map drifted, not they).
+  // sigmas are dropped (a kerb or a car's bottom that the selection let through), and road
+  // pairs are taken out of the adjustment unless the window's pairs agree on them (the map
+  // drifted, not they): a pair measured on a road mask is dropped, one measured on the region
+  // ahead stays as a reading that votes and comes back (ReviewRoadPairs).
   double road_outlier_sigmas = 4.0;
   // Pair term (road_pair_residual.h): sigma of a keyframe pair's camera height measured by
   // the road alignment (metres). The alignment's |t| / h is within 0.5-0.9 % (median) of the
@@ -41,7 +43,7 @@ struct LocalBundleAdjusterOptions {
 
 struct BundleAdjustmentReport {
   bool ran = false;
-  bool scale_from_road = false;  // the road landmarks set the scale (see min_road_landmarks)
+  bool scale_from_road = false;  // the road set the scale (see min_road_landmarks)
   int iterations = 0;
   double initial_cost = 0.0;  // Ceres' cost (half the sum of squared robust residuals)
   double final_cost = 0.0;
@@ -50,7 +52,7 @@ struct BundleAdjustmentReport {
   int num_road_landmarks = 0;
   int num_road_pairs = 0;  // keyframe pairs with a road alignment in the window
   int removed_observations = 0;
-  int removed_road_marks = 0;
+  int removed_road_marks = 0;  // road landmarks unmarked and road pairs taken out
   double milliseconds = 0.0;
 };
 

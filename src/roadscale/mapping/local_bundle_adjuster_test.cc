@@ -169,6 +169,28 @@ TEST(LocalBundleAdjuster, TheGaugeFollowsTheOldestKeyframe) {
       1e-12);
 }
 
+TEST(LocalBundleAdjuster, AnOldestKeyframeWithoutResidualsLeavesTheGaugeToTheNextOne) {
+  // The oldest keyframe has lost every observation and anchors no road landmark, so it is not
+  // in the problem: the oldest keyframe that is must hold the gauge.
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = testing::ExactWindow(scene, 8, 3);
+  Keyframe& oldest = window.keyframes().front();
+  std::vector<int64_t> seen;
+  for (const auto& [id, pixel] : oldest.observations) seen.push_back(id);
+  for (int64_t id : seen) window.RemoveObservation(&oldest, id);
+  for (auto& [id, landmark] : window.landmarks()) {
+    if (landmark.road_anchor_frame == oldest.frame_index) landmark.is_road = false;
+  }
+  Corrupt(&window, 0.3, 0.0, 3);
+  Perturb(&window, 2, 0.2, 4);
+  const Rigid3d second = window.keyframes()[1].cam_from_world;
+
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, {}, &window);
+  ASSERT_TRUE(report.scale_from_road);
+  EXPECT_LT((window.keyframes()[1].cam_from_world.matrix() - second.matrix()).norm(), 1e-12);
+  EXPECT_LT(MaxCentreError(window, scene), 0.1);
+}
+
 class LocalBundleAdjusterScale : public ::testing::TestWithParam<double> {};
 
 TEST_P(LocalBundleAdjusterScale, TheCameraHeightTermMakesAWrongScaleMetric) {

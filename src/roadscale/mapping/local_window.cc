@@ -67,17 +67,23 @@ void LocalWindow::RemoveWeakLandmarks() {
 
 void LocalWindow::Rescale(double factor) {
   if (keyframes_.empty()) return;
-  const Rigid3d world_from_oldest = keyframes_.front().cam_from_world.inverse();
-  const Eigen::Vector3d origin = world_from_oldest.translation();
+  const Eigen::Vector3d origin = keyframes_.front().cam_from_world.inverse().translation();
   for (Keyframe& keyframe : keyframes_) {
-    Rigid3d world_from_cam = keyframe.cam_from_world.inverse();
-    world_from_cam.translation() = origin + factor * (world_from_cam.translation() - origin);
-    keyframe.cam_from_world = world_from_cam.inverse();
+    keyframe.cam_from_world = RescaledPose(keyframe.cam_from_world, factor);
     keyframe.baseline_at_creation *= factor;
   }
   for (auto& [id, landmark] : landmarks_) {
     landmark.position = origin + factor * (landmark.position - origin);
   }
+}
+
+Rigid3d LocalWindow::RescaledPose(const Rigid3d& cam_from_world, double factor) const {
+  if (keyframes_.empty()) return cam_from_world;
+  // The oldest keyframe's centre is the fixed point, so it may be read before or after Rescale.
+  const Eigen::Vector3d origin = keyframes_.front().cam_from_world.inverse().translation();
+  Rigid3d world_from_cam = cam_from_world.inverse();
+  world_from_cam.translation() = origin + factor * (world_from_cam.translation() - origin);
+  return world_from_cam.inverse();
 }
 
 }  // namespace roadscale

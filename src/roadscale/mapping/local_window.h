@@ -38,14 +38,16 @@ class LocalWindow {
   void RemoveObservation(Keyframe* keyframe, int64_t track_id);
   // Erases a track everywhere: its observations in every keyframe and its landmark.
   void RemoveTrack(int64_t track_id);
-  // Erases the landmarks observed by fewer than two keyframes.
-  void RemoveWeakLandmarks();
   // Multiplies every keyframe position and landmark by `factor` about the oldest keyframe's
   // centre (a change of the map's scale that keeps the oldest keyframe where it is).
   void Rescale(double factor);
+  // A pose outside the window moved as Rescale moves the window's.
+  Rigid3d RescaledPose(const Rigid3d& cam_from_world, double factor) const;
 
  private:
   int CountRoadPairsIf(bool in_adjustment_only) const;
+  // Erases the landmarks observed by fewer than two keyframes.
+  void RemoveWeakLandmarks();
 
   std::deque<Keyframe> keyframes_;
   std::map<int64_t, Landmark> landmarks_;

@@ -46,5 +46,27 @@ TEST(LocalWindow, RemoveOldestKeyframeDropsLandmarksSeenOnceAndRoadMarksOfIt) {
   EXPECT_EQ(window.CountRoadLandmarks(), 0);
 }
 
+TEST(LocalWindow, RescaledPoseMovesAPoseAsRescaleMovesTheKeyframes) {
+  LocalWindow window;
+  const Rigid3d oldest = MakeRigid3d(
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix(), {1.0, 0.5, -2.0});
+  const Rigid3d newer = MakeRigid3d(
+      Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()).toRotationMatrix(), {0.2, 0.4, -6.0});
+  window.AddKeyframe(KeyframeSeeing(0, {}));
+  window.AddKeyframe(KeyframeSeeing(3, {}));
+  window.keyframes()[0].cam_from_world = oldest;
+  window.keyframes()[1].cam_from_world = newer;
+
+  const Rigid3d predicted = window.RescaledPose(newer, 2.5);
+  window.Rescale(2.5);
+  EXPECT_LT((window.keyframes()[1].cam_from_world.matrix() - predicted.matrix()).norm(), 1e-12);
+  EXPECT_LT((window.keyframes()[0].cam_from_world.matrix() - oldest.matrix()).norm(), 1e-12);
+  // The oldest keyframe's centre is the fixed point: after Rescale the same answer.
+  EXPECT_LT((window.RescaledPose(newer, 2.5).matrix() - predicted.matrix()).norm(), 1e-12);
+  const double before = (newer.inverse().translation() - oldest.inverse().translation()).norm();
+  const double after = (predicted.inverse().translation() - oldest.inverse().translation()).norm();
+  EXPECT_NEAR(after / before, 2.5, 1e-12);
+}
+
 }  // namespace
 }  // namespace roadscale

@@ -78,7 +78,7 @@ bool ReprojectionResidual::Evaluate(double const* const* parameters, double* res
   RotatePoint(cam_from_world, parameters[1], &point_cam, pose_jacobian ? &by_rotation : nullptr,
               point_jacobian ? &by_point : nullptr);
   for (int i = 0; i < 3; ++i) point_cam[i] += cam_from_world[3 + i];
-  if (point_cam[2] < 1e-6) return false;
+  if (point_cam[2] < kMinDepthInFront) return false;
   // Multiplied by the inverse depth, as Ceres' Jet divides.
   const double inverse_z = 1.0 / point_cam[2];
   residuals[0] = fx_ * point_cam[0] * inverse_z + cx_ - observed_.x();

@@ -104,7 +104,8 @@ SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& s
       backend_(options.mapping.mode == MappingOptions::Mode::kKeyframe
                    ? std::make_unique<KeyframeBackend>(
                          camera.camera, options.road_selection.camera_height, options.mapping,
-                         options.road_selection, options.max_frames_before_first_scale)
+                         options.road_selection, options.frontend.motion,
+                         options.max_frames_before_first_scale)
                    : nullptr),
       frontend_(camera.camera, options.frontend),
       max_waiting_frames_(options.max_frames_before_first_scale) {

@@ -40,15 +40,15 @@ struct Sample {
 };
 
 // The warp from the source image into the target: a source road pixel along the ray r lands at
-// pi(K w) with w = R r + d (m.r), R the target_from_source rotation and d = -R u, u the
+// pi(K w) with w = R r + d (m.r), R = prev_from_cur (target_from_source) and d = -R u, u the
 // direction of the translation of source_from_target (in the source frame).
 struct WarpState {
-  Eigen::Matrix3d rotation;
+  Eigen::Matrix3d prev_from_cur;
   Eigen::Vector3d translation_direction;  // u
   Eigen::Vector3d m;
   double offset = 0.0;  // grey offset of the target against the source
 
-  Eigen::Vector3d Direction() const { return -(rotation * translation_direction); }
+  Eigen::Vector3d Direction() const { return -(prev_from_cur * translation_direction); }
 };
 
 float Bilinear(const cv::Mat& image, double x, double y) {
@@ -126,7 +126,7 @@ bool WithinSampledRegion(const Eigen::Vector3d& ray, const Eigen::Vector3d& norm
   return options.max_distance <= 0.0 || ray.z() <= options.max_distance * along_normal;
 }
 
-std::vector<Sample> SelectSamples(const Level& level, const Eigen::Matrix3d& rotation,
+std::vector<Sample> SelectSamples(const Level& level, const Eigen::Matrix3d& prev_from_cur,
                                   const Eigen::Vector3d& normal, bool within_limits,
                                   const RoadPlaneAlignmentOptions& options) {
   cv::Mat dx, dy;
@@ -158,7 +158,7 @@ std::vector<Sample> SelectSamples(const Level& level, const Eigen::Matrix3d& rot
     const cv::Point& pixel = textured[static_cast<size_t>(i)];
     Sample sample;
     sample.ray = K_inverse * Eigen::Vector3d(pixel.x, pixel.y, 1.0);
-    sample.rotated = rotation * sample.ray;
+    sample.rotated = prev_from_cur * sample.ray;
     sample.grey = level.source.at<float>(pixel);
     samples.push_back(sample);
   }
@@ -254,7 +254,6 @@ std::optional<Eigen::Vector3d> SearchStart(const Level& level, const std::vector
 struct LevelFit {
   bool converged = false;
   int used = 0;
-  double rms = 0.0;
   int iterations = 0;
 };
 
@@ -267,7 +266,6 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
     Eigen::Vector4d g = Eigen::Vector4d::Zero();
-    double squared = 0.0;
     int used = 0;
     for (const Sample& sample : samples) {
       Eigen::Vector3d q;
@@ -286,11 +284,9 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
       const double weight = loss.Weight(residual);
       H.noalias() += weight * J * J.transpose();
       g.noalias() += weight * residual * J;
-      squared += residual * residual;
       ++used;
     }
     fit.used = used;
-    fit.rms = used > 0 ? std::sqrt(squared / used) : 0.0;
     if (used < 4) return fit;
     ++fit.iterations;
     // A little Levenberg damping keeps a poorly seen direction of m from running off.
@@ -376,13 +372,14 @@ RoadPlaneAlignment AlignOnLevels(const std::vector<Level>& levels, const Rigid3d
   const Eigen::Vector3d normal_in_cur = cur_from_prev.linear() * normal_guess.normalized();
 
   WarpState state;
-  state.rotation = cur_from_prev.linear().transpose();  // prev_from_cur
+  state.prev_from_cur = cur_from_prev.linear().transpose();
   state.translation_direction = u;
   bool started = false;
+  bool converged = false;
   for (int l = options.pyramid_levels; l >= 0; --l) {
     const Level& level = levels[l];
     const std::vector<Sample> samples =
-        SelectSamples(level, state.rotation, normal_in_cur, l == 0, options);
+        SelectSamples(level, state.prev_from_cur, normal_in_cur, l == 0, options);
     if (!started) {
       const bool expected = expected_baseline_over_height > 0.0;
       const std::optional<Eigen::Vector3d> start =
@@ -399,20 +396,19 @@ RoadPlaneAlignment AlignOnLevels(const std::vector<Level>& levels, const Rigid3d
     const LevelFit fit = FitLevel(level, samples, options, &state);
     result.iterations += fit.iterations;
     if (l == 0) {
-      result.converged = fit.converged;
+      converged = fit.converged;
       result.samples = fit.used;
-      result.rms_grey = fit.rms;
     }
   }
   if (!started || result.samples < options.min_samples || !(state.m.norm() > 0.0)) return result;
   // Back to the previous camera: n_prev = R^T n_cur, h_prev = h_cur - n_cur.t (units of |t|).
   const Eigen::Vector3d n_cur = state.m.normalized();
-  result.plane.normal = state.rotation * n_cur;
+  result.plane.normal = state.prev_from_cur * n_cur;
   result.plane.height = 1.0 / state.m.norm() - n_cur.dot(u);
   const double change_deg =
       std::acos(std::clamp(result.plane.normal.dot(normal_guess.normalized()), -1.0, 1.0)) * 180.0 /
       M_PI;
-  result.ok = result.converged && result.plane.height > 0.0 && change_deg <= kMaxNormalChangeDeg;
+  result.ok = converged && result.plane.height > 0.0 && change_deg <= kMaxNormalChangeDeg;
   return result;
 }
 

@@ -51,8 +51,9 @@ struct RoadPlaneAlignmentOptions {
   // pixels would otherwise still pull with the Huber loss's full slope.
   enum class Loss { kHuber, kTukey };
   Loss loss = Loss::kHuber;
-  // The coarsest level starts from the best of `search_steps` values of |t| / h spaced
-  // evenly in logarithm between these bounds, the normal held at the guess.
+  // The alignment starts, at the coarsest level where at least half of the samples land in
+  // the other image, from the best of `search_steps` values of |t| / h spaced evenly in
+  // logarithm between these bounds, the normal held at the guess.
   double min_baseline_over_height = 0.01;
   double max_baseline_over_height = 10.0;
   int search_steps = 40;
@@ -84,12 +85,10 @@ struct RoadPlaneAlignmentOptions {
 
 struct RoadPlaneAlignment {
   bool ok = false;  // converged at the finest level, on enough pixels, to a road-like plane
-  bool converged = false;
   // In the previous camera's frame, the height in units of the translation's length.
   Plane plane;
-  double rms_grey = 0.0;  // of the samples used at the finest level
-  int samples = 0;        // used at the finest level
-  int iterations = 0;     // summed over the levels
+  int samples = 0;     // used at the finest level
+  int iterations = 0;  // summed over the levels
 };
 
 // prev_image and cur_image: grey CV_8UC1 of the camera's size. cur_road_mask: CV_8UC1 of the
