@@ -226,8 +226,12 @@ std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
   const std::optional<Eigen::Vector3d> normal =
       ExpectedRoadNormal(cur_from_prev, selection_.options().road_model);
   if (!normal) return std::nullopt;
-  // ExpectedRoadNormal is in the earlier keyframe's frame; the check is in the newest one's.
-  return Plane{cur_from_prev.linear() * *normal, camera_height_};
+  // The motion model's normal of the last pair (perpendicular to the travel, nearest the
+  // camera's down axis), built in the earlier keyframe's frame and used in the newest one's:
+  // the model's own error (the camera's pitch against the road, the crown) is larger than the
+  // two frames' difference, a median 0.1 degree. Rotated into the newest frame it scored no
+  // better (docs/benchmarks.md, "A review of the back end").
+  return Plane{*normal, camera_height_};
 }
 
 int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {
