@@ -44,7 +44,7 @@ SampsonRefinementResult RefineRelativePoseSampson(const Eigen::Matrix3d& rotatio
                                                   const SampsonRefinementOptions& options);
 
 // Sampson error (normalised coordinates times focal_px) of one correspondence under
-// E = [t]x R.
+// E = [t]x R, signed: compare its absolute value with a threshold.
 double SampsonErrorPx(const Eigen::Matrix3d& essential, const Eigen::Vector2d& prev,
                       const Eigen::Vector2d& cur, double focal_px);
 

@@ -96,7 +96,8 @@ struct TwoViewMotion {
   int num_inliers = 0;
   double inlier_ratio = 0.0;
   // Median image motion of the correspondences (pixels) and median parallax: the motion left
-  // after removing the rotation (pixels, over the inliers for kOk, else over all).
+  // after removing the rotation (pixels; over the inliers where an essential matrix was found,
+  // the flow itself for kStationary, 0 when the estimate stopped before).
   double flow_px = 0.0;
   double parallax_px = 0.0;
   // Root mean square Sampson error of the inliers before / after refinement (pixels).

@@ -16,7 +16,8 @@ namespace roadscale {
 // network runs on its own threads beside the frontend, and the scale stage gets each frame's
 // road mask fresh (segmented frames) or carried through the road homographies from the last
 // segmented frame. Threaded: loading, frontend, the segmenters and the scale stage on their own
-// threads; the output is the same as without threads, byte for byte. Returns whether `stop`
+// threads; the poses are the same as without threads, byte for byte (frames.csv's time columns
+// differ). Returns whether `stop`
 // interrupted the run.
 bool RunWithCarriedMasks(FrameSource& source, const std::vector<Segmenter*>& segmenters,
                          SequentialPipeline& pipeline, const PipelineOptions& options,

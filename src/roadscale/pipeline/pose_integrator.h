@@ -15,8 +15,8 @@ enum class PoseUpdate {
   kKept,              // stationary: the pose of the previous frame
   kRotationOnly,      // pure rotation: the measured rotation, the last measured direction,
                       // a length scaled down by the parallax
-  kConstantVelocity,  // no usable estimate: the last applied step again (direction and
-                      // rotation), with this step's length
+  kConstantVelocity,  // no usable estimate: the last measured (kMotion) rotation and
+                      // direction again, with this step's length
 };
 
 // "first", "motion", "kept", "rotation_only", "constant_velocity".
@@ -39,7 +39,8 @@ double ParallaxScaledLength(double reference_length, double parallax_px,
 // status asks: a stationary frame keeps the pose (a stop must not drift); a pure rotation
 // turns the camera and keeps moving along the last measured direction (a car turning slowly
 // still moves forward, and its direction in the camera frame changes little from one frame
-// to the next); a frame without an estimate repeats the last step.
+// to the next); a frame without an estimate repeats the last measured step's rotation and
+// direction.
 //
 // A pure rotation without a length of its own moves ParallaxScaledLength(last length, its
 // parallax, the parallax of the last measured motion), at most the last length: its

@@ -25,7 +25,7 @@ struct RunReportData {
 
 // Warnings about the trajectory's scale for the user and the report: frames that were
 // unscaled (no valid scale yet), and runs of held frames, e.g. "no usable road in frames
-// 310-420: unscaled there (unit steps, arbitrary scale)". Empty when every step was scaled.
+// 310-420: the last scale was held there". Empty when every step was scaled.
 std::vector<std::string> ScaleWarnings(const std::vector<FrameRecord>& records);
 
 // The report's per-frame series: scale (raw, filtered, and the true step length when the

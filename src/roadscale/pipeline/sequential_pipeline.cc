@@ -340,15 +340,6 @@ SequentialPipeline::~SequentialPipeline() {
   }
 }
 
-FrameRecord SequentialPipeline::ProcessFrame(const Frame& frame, double load_ms,
-                                             const SegmentationResult& segmentation) {
-  SegmentedFrame input;
-  input.frame = frame;
-  input.segmentation = segmentation;
-  input.load_ms = load_ms;
-  return Integrate(Track(input));
-}
-
 void RunSummary::Add(const FrameRecord& record) {
   const double n = static_cast<double>(frames);
   const auto update_mean = [&](double* mean, double value) {

@@ -78,7 +78,7 @@ struct FrameRecord {
   double detection_ms = 0.0;     // feature detection (0 when no re-detection)
   double motion_ms = 0.0;        // two-view motion
   double scale_ms = 0.0;
-  // The sum of the stages' times and the writing. With the threaded runner the stages
+  // The sum of the stages' times (the writing not included). With the threaded runner the stages
   // overlap, so the run's frame rate is not 1000 / total_ms.
   double total_ms = 0.0;
 
@@ -162,18 +162,11 @@ class SequentialPipeline {
   }
 
   // Writes the frames still waiting for a first scale, with unit steps. Call it after the
-  // last frame (also after a stop or an error; the destructor calls it when it was not).
+  // last frame (also after a stop or an error); the destructor calls it again, which does
+  // nothing the second time.
   void Finish();
   ~SequentialPipeline();
 
-  // Track then Integrate. `load_ms`: how long decoding the frame took, for the record.
-  FrameRecord ProcessFrame(const Frame& frame, double load_ms = 0.0,
-                           const SegmentationResult& segmentation = {});
-
-  const Rigid3d& world_from_cam() const { return integrator_.world_from_cam(); }
-  const std::string& poses_path() const { return poses_path_; }
-  const std::string& tum_path() const { return tum_path_; }
-  const std::string& records_path() const { return records_path_; }
   // The columns after FrameRecordCsvHeader() in OUT/frames.csv: the scale source's, or in
   // keyframe mode the back end's (MappedFrameCsvHeader).
   std::string DiagnosticsCsvHeader() const;

@@ -340,7 +340,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   std::vector<Eigen::Vector2d> kept_cur;
   std::vector<int64_t> outliers;
   for (size_t i = 0; i < ids.size(); ++i) {
-    if (SampsonErrorPx(essential, prev_normalized[i], cur_normalized[i], camera_.fx) <=
+    if (std::abs(SampsonErrorPx(essential, prev_normalized[i], cur_normalized[i], camera_.fx)) <=
         options_.max_sampson_error_px) {
       kept_prev.push_back(prev_pixels[i]);
       kept_cur.push_back(cur_pixels[i]);

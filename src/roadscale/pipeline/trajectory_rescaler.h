@@ -177,7 +177,7 @@ class TrajectoryRescaler {
   // `frame.image` grey CV_8UC1 of the camera's size; `segmentation` that frame's masks for a pose
   // frame (empty masks = no segmentation; ignored for the frames in between); `segmentation_ms` and
   // `read_ms` for the records. Returns the poses finished by this frame (none, one, or several at
-  // once when the first road plane arrives). Throws Error on a frame out of order or a bad image.
+  // once when the first road plane arrives). Throws Error on a bad image.
   std::vector<RescaledPose> AddFrame(const Frame& frame, const SegmentationResult& segmentation,
                                      double segmentation_ms = 0.0, double read_ms = 0.0);
 

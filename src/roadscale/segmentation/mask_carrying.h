@@ -33,8 +33,8 @@ struct MaskCarryOptions {
 
 // The homography cur_from_prev (pixels) of the road plane between two frames, fitted to the
 // track pixels `prev` -> `cur` whose `prev` pixel lies on `prev_road_mask` (non-zero = road);
-// nothing when too few tracks or inliers. The plane-induced homography of the known motion:
-// exact for road pixels.
+// nothing when too few tracks or inliers (RANSAC). A plane induces one homography between two
+// views, so it is exact for road pixels whatever the motion.
 std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector2d>& prev,
                                                  const std::vector<Eigen::Vector2d>& cur,
                                                  const cv::Mat& prev_road_mask,
