@@ -17,6 +17,7 @@ ScaleResult OracleScaleSource::StepLength(const ScaleQuery& query) {
   }
   ScaleResult result;
   result.valid = true;
+  result.measured = true;
   result.step_length_m = (ground_truth_.world_from_cam[query.position].translation() -
                           ground_truth_.world_from_cam[query.position - 1].translation())
                              .norm();

@@ -41,6 +41,7 @@ ScaleResult RoadScaleSource::StepLength(const ScaleQuery& query) {
   const ScaleEstimate& estimate = last_estimate_;
   result.valid = estimate.has_scale && std::isfinite(estimate.scale) && estimate.scale > 0.0;
   result.step_length_m = result.valid ? estimate.scale : 0.0;
+  result.measured = result.valid && estimate.status == ScaleStatus::kOk;
   result.status = ScaleStatusName(estimate.status);
   std::ostringstream diagnostics;
   diagnostics.precision(6);

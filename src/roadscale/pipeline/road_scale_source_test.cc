@@ -43,6 +43,7 @@ TEST(RoadScaleSource, ScalesTheFrontendsMotionFromTheRoad) {
   query.frontend = &frame;
   const ScaleResult result = source.StepLength(query);
   ASSERT_TRUE(result.valid);
+  EXPECT_TRUE(result.measured);
   EXPECT_EQ(result.status, "ok");
   EXPECT_LT(std::abs(result.step_length_m / 1.1 - 1.0), 0.01);
   // Only the motion's inliers reach the estimator.
@@ -53,6 +54,26 @@ TEST(RoadScaleSource, ScalesTheFrontendsMotionFromTheRoad) {
             std::count(header.begin(), header.end(), ','));
 }
 
+TEST(RoadScaleSource, APairWithoutRoadPointsHoldsTheLastLengthAsNotMeasured) {
+  RoadScaleSource source(KittiOdometryCamera(), ScaleEstimatorOptions());
+  const FrontendFrame street = StreetFrame(MotionStatus::kOk);
+  ScaleQuery query;
+  query.position = 1;
+  query.frontend = &street;
+  const ScaleResult fitted = source.StepLength(query);
+  ASSERT_TRUE(fitted.measured);
+
+  FrontendFrame no_road = street;
+  no_road.correspondences.resize(3);
+  query.position = 2;
+  query.frontend = &no_road;
+  const ScaleResult held = source.StepLength(query);
+  EXPECT_TRUE(held.valid);
+  EXPECT_FALSE(held.measured);
+  EXPECT_EQ(held.status, "held: too few points");
+  EXPECT_DOUBLE_EQ(held.step_length_m, fitted.step_length_m);
+}
+
 TEST(RoadScaleSource, FramesWithoutMotionHaveNoLength) {
   RoadScaleSource source(KittiOdometryCamera(), ScaleEstimatorOptions());
   const FrontendFrame frame = StreetFrame(MotionStatus::kPureRotation);
@@ -61,6 +82,7 @@ TEST(RoadScaleSource, FramesWithoutMotionHaveNoLength) {
   query.frontend = &frame;
   const ScaleResult result = source.StepLength(query);
   EXPECT_FALSE(result.valid);
+  EXPECT_FALSE(result.measured);
   EXPECT_EQ(result.status.rfind("no motion: ", 0), 0U) << result.status;
   EXPECT_TRUE(result.diagnostics_csv.empty());
 }

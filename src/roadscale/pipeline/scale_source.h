@@ -26,6 +26,9 @@ struct ScaleQuery {
 struct ScaleResult {
   // False when the source has no length for this step (the pipeline then keeps the last one).
   bool valid = false;
+  // True when the length was measured on this frame pair; false when a valid length is one
+  // the source held from an earlier pair (the frame is then written as "held").
+  bool measured = false;
   // Length in metres of the camera's translation from the previous to the current frame.
   double step_length_m = 0.0;
   // One word or phrase for the per-frame record ("oracle", "held: too few points", ...).

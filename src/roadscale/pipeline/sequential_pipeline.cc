@@ -251,7 +251,7 @@ void SequentialPipeline::ApplyAndWrite(FrameRecord record, const TwoViewMotion& 
     default:
       record.status = backfilled                 ? "backfilled"
                       : !integrator_.has_scale() ? "unscaled"
-                      : scale.valid              ? "ok"
+                      : scale.measured           ? "ok"
                                                  : "held";
       break;
   }

@@ -228,6 +228,48 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
   }
 }
 
+// The oracle's lengths on even positions; on odd ones the last of them again, as a source
+// holds its last road model when a pair has too few road points.
+class HoldingOracle : public ScaleSource {
+ public:
+  explicit HoldingOracle(Trajectory ground_truth) : oracle_(std::move(ground_truth)) {}
+  std::string Name() const override { return "holding oracle"; }
+  ScaleResult StepLength(const ScaleQuery& query) override {
+    if (query.position % 2 == 0) {
+      last_ = oracle_.StepLength(query);
+      return last_;
+    }
+    ScaleResult held = last_;
+    held.measured = false;
+    held.status = "held: too few points";
+    return held;
+  }
+
+ private:
+  OracleScaleSource oracle_;
+  ScaleResult last_;
+};
+
+TEST(SequentialPipelineSynthetic, AHeldLengthIsWrittenAsHeld) {
+  constexpr int kFrames = 8;
+  testing::TempDir dir;
+  const FrameSourceOptions source_options = RenderDrive("urban", kFrames, dir);
+  const auto source = OpenFrameSource(source_options);
+  HoldingOracle holding(*source->ground_truth());
+  const std::string out = dir.File("run");
+  RunSequentialPipeline(*source, holding, FrameToFrame(), out);
+  const std::vector<std::string> status = Column(out + "/frames.csv", "status");
+  const std::vector<std::string> length = Column(out + "/frames.csv", "step_length_m");
+  ASSERT_EQ(status.size(), static_cast<size_t>(kFrames));
+  // Frame 1 waits for frame 2's first length and is backfilled.
+  for (int k = 2; k < kFrames; ++k) {
+    EXPECT_EQ(status[k], k % 2 == 0 ? "ok" : "held") << k;
+    if (k % 2 == 1) {
+      EXPECT_EQ(length[k], length[k - 1]) << k;
+    }
+  }
+}
+
 // The rendered labels, slowed down by a few milliseconds that depend on the frame, so that
 // the segmentation threads finish their frames out of order; throws on `failing_frame`.
 class UnevenSegmenter : public Segmenter {
