@@ -34,6 +34,12 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, c
   return keyframe;
 }
 
+int CountSharedTracks(const Keyframe& a, const Keyframe& b) {
+  int shared = 0;
+  for (const auto& observation : b.observations) shared += a.observations.count(observation.first);
+  return shared;
+}
+
 ScaleEstimatorOptions SelectionOptions(ScaleEstimatorOptions options, double camera_height,
                                        int min_points) {
   options.camera_height = camera_height;
@@ -350,6 +356,9 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   const cv::Mat& prev_mask = prev.road_mask.empty() ? road_region_ : prev.road_mask;
   const cv::Mat& cur_mask = cur.road_mask.empty() ? road_region_ : cur.road_mask;
   if (prev.image.empty() || cur.image.empty() || prev_mask.empty() || cur_mask.empty()) return;
+  // A pair that shares too few tracks has a guessed relative pose (across a black frame, a
+  // lost track): aligning the road through it would measure the guess.
+  if (CountSharedTracks(prev, cur) < motion_options_.min_correspondences) return;
   const Rigid3d cur_from_prev = cur.cam_from_world * prev.cam_from_world.inverse();
   const double baseline = cur_from_prev.translation().norm();
   if (!(baseline > 0.0)) return;

@@ -34,6 +34,7 @@ KeyframeMotion MeasureKeyframeMotion(const Keyframe& keyframe, int frame_index,
                                      const PinholeCamera& camera) {
   KeyframeMotion motion;
   motion.frame_gap = frame_index - keyframe.frame_index;
+  motion.num_observations = static_cast<int>(observations.size());
   std::vector<double> parallax;
   for (const TrackObservation& observation : observations) {
     const auto seen = keyframe.observations.find(observation.track_id);
@@ -52,7 +53,7 @@ KeyframeMotion MeasureKeyframeMotion(const Keyframe& keyframe, int frame_index,
 
 KeyframeReason SelectKeyframe(const KeyframeMotion& motion, bool stationary,
                               const KeyframeSelectorOptions& options) {
-  if (stationary) return KeyframeReason::kNone;
+  if (stationary || motion.num_observations == 0) return KeyframeReason::kNone;
   if (motion.parallax_px >= options.min_parallax_px) return KeyframeReason::kParallax;
   if (motion.tracked_share < options.min_tracked_share) return KeyframeReason::kTrackedShare;
   if (motion.frame_gap >= options.max_frame_gap) return KeyframeReason::kFrameGap;

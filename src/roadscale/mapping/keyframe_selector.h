@@ -34,6 +34,7 @@ struct KeyframeMotion {
   double parallax_px = 0.0;    // median over the shared tracks
   double tracked_share = 0.0;  // shared tracks / the keyframe's observations
   int frame_gap = 0;
+  int num_observations = 0;  // the frame's tracks, shared or not
 };
 
 // The motion of `frame` (its observations and rotation) since `keyframe`.
@@ -44,7 +45,8 @@ KeyframeMotion MeasureKeyframeMotion(const Keyframe& keyframe, int frame_index,
                                      const PinholeCamera& camera);
 
 // Whether the frame becomes a keyframe, and why. A stationary frame never does (it adds no
-// baseline); the caller passes `stationary`.
+// baseline), nor does a frame without tracks (a black or burnt-out image: it adds nothing to
+// the map and would take a place in the window); the caller passes `stationary`.
 KeyframeReason SelectKeyframe(const KeyframeMotion& motion, bool stationary,
                               const KeyframeSelectorOptions& options);
 

@@ -84,5 +84,20 @@ TEST(KeyframeSelector, AFrameGapForcesAKeyframe) {
   EXPECT_EQ(frame, 25);
 }
 
+TEST(KeyframeSelector, AFrameWithoutTracksIsNoKeyframe) {
+  // A black frame: no track is seen, so every reason would hold, yet the map gains nothing.
+  const auto scene = testing::MappingTestScene::Street(40, 1.0, 0.0);
+  const Keyframe keyframe = KeyframeOf(scene, 0);
+  const Rigid3d cur_from_keyframe = scene.cam_from_world[35] * keyframe.cam_from_world.inverse();
+  const KeyframeMotion blank =
+      MeasureKeyframeMotion(keyframe, 35, {}, cur_from_keyframe.linear(), scene.camera);
+  EXPECT_EQ(blank.num_observations, 0);
+  EXPECT_EQ(SelectKeyframe(blank, false, {}), KeyframeReason::kNone);
+  const KeyframeMotion seen = MeasureKeyframeMotion(keyframe, 35, scene.Observe(35, 0.0, 0),
+                                                    cur_from_keyframe.linear(), scene.camera);
+  EXPECT_GT(seen.num_observations, 0);
+  EXPECT_NE(SelectKeyframe(seen, false, {}), KeyframeReason::kNone);
+}
+
 }  // namespace
 }  // namespace roadscale

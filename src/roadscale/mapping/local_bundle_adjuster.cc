@@ -82,6 +82,25 @@ int ReviewRoadPairs(double camera_height, double max_offset, LocalWindow* window
   return taken_out;
 }
 
+// For each keyframe, whether no landmark is seen both from a keyframe before it and from it or
+// one after it: the window falls apart there into parts that no residual ties together.
+std::vector<bool> StartsOfUnlinkedParts(
+    const std::map<int64_t, std::pair<size_t, size_t>>& seen_from, size_t num_keyframes) {
+  std::vector<int> spans_starting(num_keyframes + 1, 0);
+  for (const auto& [id, span] : seen_from) {
+    if (span.first == span.second) continue;
+    ++spans_starting[span.first + 1];
+    --spans_starting[span.second + 1];
+  }
+  std::vector<bool> starts(num_keyframes, false);
+  int crossing = 0;
+  for (size_t k = 0; k < num_keyframes; ++k) {
+    crossing += spans_starting[k];
+    starts[k] = k > 0 && crossing == 0;
+  }
+  return starts;
+}
+
 }  // namespace
 
 void LocalBundleAdjusterOptions::Check() const {
@@ -130,6 +149,8 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
+  // The first and last keyframe (index) that observes each landmark in the problem.
+  std::map<int64_t, std::pair<size_t, size_t>> seen_from;
   for (size_t k = 0; k < keyframes.size(); ++k) {
     for (const auto& [id, pixel] : keyframes[k].observations) {
       const auto point = points.find(id);
@@ -143,6 +164,8 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
       }
       problem.AddResidualBlock(ReprojectionResidual::Create(camera, pixel), &reprojection_loss,
                                poses[k].data(), point->second.data());
+      const auto [span, first_seen] = seen_from.emplace(id, std::make_pair(k, k));
+      if (!first_seen) span->second.second = k;
     }
   }
   for (const auto& [id, landmark] : landmarks) {
@@ -164,11 +187,16 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
   }
   // The gauge: the oldest keyframe in the problem is held, and the next one too while the
   // road does not set the scale. A keyframe left without residuals is not in the problem, so
-  // they are counted among those that are.
+  // they are counted among those that are. Where no landmark links a keyframe to the ones
+  // before it (every track lost to a black frame), it starts a map of its own whose place
+  // only the motion's prediction gave: that part is held the same way.
+  const std::vector<bool> starts_part = StartsOfUnlinkedParts(seen_from, keyframes.size());
   const int keyframes_held = report.scale_from_road ? 1 : 2;
   int held = 0;
-  for (size_t k = 0; k < poses.size() && held < keyframes_held; ++k) {
+  for (size_t k = 0; k < poses.size(); ++k) {
     if (!problem.HasParameterBlock(poses[k].data())) continue;
+    if (starts_part[k]) held = 0;
+    if (held >= keyframes_held) continue;
     problem.SetParameterBlockConstant(poses[k].data());
     ++held;
   }

@@ -191,6 +191,53 @@ TEST(LocalBundleAdjuster, AnOldestKeyframeWithoutResidualsLeavesTheGaugeToTheNex
   EXPECT_LT(MaxCentreError(window, scene), 0.1);
 }
 
+TEST(LocalBundleAdjuster, EachUnlinkedPartOfTheWindowHoldsItsOwnGauge) {
+  // Every track lost between keyframes 3 and 4 (a black frame): no landmark is seen from both
+  // sides, so keyframe 4's place is only the motion's prediction and it holds the second part.
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = testing::ExactWindow(scene, 8, 3);
+  constexpr size_t kFirstOfSecondPart = 4;
+  int second_part_only = 0;
+  std::vector<int64_t> seen_before;
+  for (const auto& [id, landmark] : window.landmarks()) {
+    bool before = false;
+    for (size_t k = 0; k < kFirstOfSecondPart; ++k) {
+      before |= window.keyframes()[k].observations.count(id) > 0;
+    }
+    if (before) {
+      seen_before.push_back(id);
+    } else {
+      ++second_part_only;
+    }
+  }
+  for (int64_t id : seen_before) {
+    for (size_t k = kFirstOfSecondPart; k < window.keyframes().size(); ++k) {
+      if (window.keyframes()[k].observations.count(id)) {
+        window.RemoveObservation(&window.keyframes()[k], id);
+      }
+    }
+  }
+  ASSERT_GE(second_part_only, 50);
+  Corrupt(&window, 0.3, 0.0, 3);
+  Perturb(&window, kFirstOfSecondPart, 0.2, 4);
+  const Rigid3d first_of_second = window.keyframes()[kFirstOfSecondPart].cam_from_world;
+
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, {}, &window);
+  ASSERT_TRUE(report.scale_from_road);
+  EXPECT_LT(
+      (window.keyframes()[kFirstOfSecondPart].cam_from_world.matrix() - first_of_second.matrix())
+          .norm(),
+      1e-12);
+  // Within the second part the road still makes the map metric.
+  const size_t last = window.keyframes().size() - 1;
+  const double true_length = (Centre(scene.cam_from_world[window.keyframes()[last].frame_index]) -
+                              Centre(scene.cam_from_world[window.keyframes()[4].frame_index]))
+                                 .norm();
+  EXPECT_NEAR((Centre(window.keyframes()[last].cam_from_world) - Centre(first_of_second)).norm() /
+                  true_length,
+              1.0, 0.01);
+}
+
 class LocalBundleAdjusterScale : public ::testing::TestWithParam<double> {};
 
 TEST_P(LocalBundleAdjusterScale, TheCameraHeightTermMakesAWrongScaleMetric) {

@@ -281,7 +281,13 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
     record.pose_update = PoseUpdate::kKept;
     record.status = "stationary";
   } else {
-    record.pose_update = PoseUpdate::kMotion;
+    // The frame pair's motion failed (a black frame, every track lost) and the map did not
+    // localise the frame: its pose is the prediction, as the frame-to-frame host would say.
+    const bool measured = record.motion_status == MotionStatus::kOk || mapped.localization == "map";
+    record.pose_update = measured ? PoseUpdate::kMotion
+                         : record.motion_status == MotionStatus::kPureRotation
+                             ? PoseUpdate::kRotationOnly
+                             : PoseUpdate::kConstantVelocity;
     record.status = mapped.scale == MappedFrame::Scale::kRoad      ? "ok"
                     : mapped.scale == MappedFrame::Scale::kCarried ? "held"
                                                                    : "unscaled";
