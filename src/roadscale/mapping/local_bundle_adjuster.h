@@ -60,7 +60,9 @@ struct BundleAdjustmentReport {
 // (Huber), the road landmarks' heights (the camera-height term) and the keyframe pairs' road
 // alignments (the pair term). The oldest keyframe is fixed (the gauge: position and
 // orientation), and with too few road landmarks and no pair term the second oldest too (the
-// scale). Removes the observations and road marks it finds wrong.
+// scale); so is the first keyframe of each later part that no landmark ties to the keyframes
+// before it (tracking lost in between). Removes the observations and road marks it finds
+// wrong.
 // `camera_height` is h0 in metres.
 BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double camera_height,
                                          const LocalBundleAdjusterOptions& options,
