@@ -82,23 +82,24 @@ int ReviewRoadPairs(double camera_height, double max_offset, LocalWindow* window
   return taken_out;
 }
 
-// For each keyframe, whether no landmark is seen both from a keyframe before it and from it or
-// one after it: the window falls apart there into parts that no residual ties together.
-std::vector<bool> StartsOfUnlinkedParts(
-    const std::map<int64_t, std::pair<size_t, size_t>>& seen_from, size_t num_keyframes) {
+// The part of the window each keyframe belongs to, counted from 0: a new part begins at a
+// keyframe where no landmark is seen both from a keyframe before it and from it or one after
+// it, so that no residual ties the parts together.
+std::vector<size_t> UnlinkedParts(const std::map<int64_t, std::pair<size_t, size_t>>& seen_from,
+                                  size_t num_keyframes) {
   std::vector<int> spans_starting(num_keyframes + 1, 0);
   for (const auto& [id, span] : seen_from) {
     if (span.first == span.second) continue;
     ++spans_starting[span.first + 1];
     --spans_starting[span.second + 1];
   }
-  std::vector<bool> starts(num_keyframes, false);
+  std::vector<size_t> part(num_keyframes, 0);
   int crossing = 0;
   for (size_t k = 0; k < num_keyframes; ++k) {
     crossing += spans_starting[k];
-    starts[k] = k > 0 && crossing == 0;
+    if (k > 0) part[k] = part[k - 1] + (crossing == 0 ? 1 : 0);
   }
-  return starts;
+  return part;
 }
 
 }  // namespace
@@ -185,18 +186,37 @@ BundleAdjustmentReport AdjustLocalWindow(const PinholeCamera& camera, double cam
                                                       camera_height, options.road_pair_sigma_m),
                              &height_loss, poses[anchor->second].data(), poses[k].data());
   }
-  // The gauge: the oldest keyframe in the problem is held, and the next one too while the
-  // road does not set the scale. A keyframe left without residuals is not in the problem, so
-  // they are counted among those that are. Where no landmark links a keyframe to the ones
-  // before it (every track lost to a black frame), it starts a map of its own whose place
-  // only the motion's prediction gave: that part is held the same way.
-  const std::vector<bool> starts_part = StartsOfUnlinkedParts(seen_from, keyframes.size());
-  const int keyframes_held = report.scale_from_road ? 1 : 2;
+  // The gauge, in each part of the window (a part begins where no landmark ties a keyframe to
+  // the ones before it: every track lost to a black frame, its place only the motion's
+  // prediction): the part's oldest keyframe in the problem is held, and the next one too while
+  // the part's own road does not set its scale. A keyframe left without residuals is not in
+  // the problem, so they are counted among those that are.
+  const std::vector<size_t> part = UnlinkedParts(seen_from, keyframes.size());
+  std::vector<int> road_landmarks_in_part(part.back() + 1, 0);
+  std::vector<bool> road_pair_in_part(part.back() + 1, false);
+  for (const auto& [id, landmark] : landmarks) {
+    const auto anchor = pose_of_frame.find(landmark.road_anchor_frame);
+    if (landmark.is_road && anchor != pose_of_frame.end()) {
+      ++road_landmarks_in_part[part[anchor->second]];
+    }
+  }
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    if (keyframes[k].road_pair && keyframes[k].road_pair->in_adjustment &&
+        pose_of_frame.count(keyframes[k].road_pair->anchor_frame)) {
+      road_pair_in_part[part[k]] = true;
+    }
+  }
+  size_t held_part = 0;
   int held = 0;
   for (size_t k = 0; k < poses.size(); ++k) {
     if (!problem.HasParameterBlock(poses[k].data())) continue;
-    if (starts_part[k]) held = 0;
-    if (held >= keyframes_held) continue;
+    if (part[k] != held_part) {
+      held_part = part[k];
+      held = 0;
+    }
+    const bool road_scales_part =
+        road_landmarks_in_part[part[k]] >= options.min_road_landmarks || road_pair_in_part[part[k]];
+    if (held >= (road_scales_part ? 1 : 2)) continue;
     problem.SetParameterBlockConstant(poses[k].data());
     ++held;
   }

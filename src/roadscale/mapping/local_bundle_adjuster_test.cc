@@ -191,12 +191,12 @@ TEST(LocalBundleAdjuster, AnOldestKeyframeWithoutResidualsLeavesTheGaugeToTheNex
   EXPECT_LT(MaxCentreError(window, scene), 0.1);
 }
 
-TEST(LocalBundleAdjuster, EachUnlinkedPartOfTheWindowHoldsItsOwnGauge) {
-  // Every track lost between keyframes 3 and 4 (a black frame): no landmark is seen from both
-  // sides, so keyframe 4's place is only the motion's prediction and it holds the second part.
-  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+constexpr size_t kFirstOfSecondPart = 4;
+
+// An exact window of 8 keyframes in which every track is lost between keyframes 3 and 4 (a
+// black frame): no landmark is seen from both sides.
+LocalWindow WindowInTwoParts(const testing::MappingTestScene& scene) {
   LocalWindow window = testing::ExactWindow(scene, 8, 3);
-  constexpr size_t kFirstOfSecondPart = 4;
   int second_part_only = 0;
   std::vector<int64_t> seen_before;
   for (const auto& [id, landmark] : window.landmarks()) {
@@ -217,7 +217,14 @@ TEST(LocalBundleAdjuster, EachUnlinkedPartOfTheWindowHoldsItsOwnGauge) {
       }
     }
   }
-  ASSERT_GE(second_part_only, 50);
+  EXPECT_GE(second_part_only, 50);
+  return window;
+}
+
+TEST(LocalBundleAdjuster, EachUnlinkedPartOfTheWindowHoldsItsOwnGauge) {
+  // Keyframe 4's place is only the motion's prediction: it holds the second part.
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = WindowInTwoParts(scene);
   Corrupt(&window, 0.3, 0.0, 3);
   Perturb(&window, kFirstOfSecondPart, 0.2, 4);
   const Rigid3d first_of_second = window.keyframes()[kFirstOfSecondPart].cam_from_world;
@@ -236,6 +243,32 @@ TEST(LocalBundleAdjuster, EachUnlinkedPartOfTheWindowHoldsItsOwnGauge) {
   EXPECT_NEAR((Centre(window.keyframes()[last].cam_from_world) - Centre(first_of_second)).norm() /
                   true_length,
               1.0, 0.01);
+}
+
+TEST(LocalBundleAdjuster, AnUnlinkedPartWithoutRoadHoldsItsScaleToo) {
+  // The first part's road sets its scale, but none of it reaches the second part, whose scale
+  // only its first two keyframes can hold.
+  const auto scene = testing::MappingTestScene::Street(30, 1.0, 0.4);
+  LocalWindow window = WindowInTwoParts(scene);
+  for (auto& [id, landmark] : window.landmarks()) {
+    const Keyframe* anchor = window.FindKeyframe(landmark.road_anchor_frame);
+    if (anchor != nullptr && anchor->frame_index >= window.keyframes()[4].frame_index) {
+      landmark.is_road = false;
+    }
+  }
+  Corrupt(&window, 0.3, 0.0, 3);
+  Perturb(&window, kFirstOfSecondPart, 0.2, 4);
+  const Rigid3d first = window.keyframes()[kFirstOfSecondPart].cam_from_world;
+  const Rigid3d second = window.keyframes()[kFirstOfSecondPart + 1].cam_from_world;
+
+  const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, {}, &window);
+  ASSERT_TRUE(report.scale_from_road);
+  EXPECT_LT(
+      (window.keyframes()[kFirstOfSecondPart].cam_from_world.matrix() - first.matrix()).norm(),
+      1e-12);
+  EXPECT_LT(
+      (window.keyframes()[kFirstOfSecondPart + 1].cam_from_world.matrix() - second.matrix()).norm(),
+      1e-12);
 }
 
 class LocalBundleAdjusterScale : public ::testing::TestWithParam<double> {};
