@@ -1,5 +1,7 @@
 #include "roadscale/mapping/frame_localizer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <ceres/loss_function.h>
@@ -88,6 +90,16 @@ void FrameLocalizerOptions::Check() const {
   CheckOption(min_inlier_ratio > 0.0 && min_inlier_ratio <= 1.0,
               "mapping.localization_min_inlier_ratio", "must be in (0, 1]");
   CheckOption(ransac_iterations >= 1, "mapping.localization_ransac_iterations", "must be >= 1");
+  CheckOption(max_direction_change_deg > 0.0 && max_direction_change_deg <= 180.0,
+              "mapping.localization_max_direction_deg", "must be in (0, 180] (180: no check)");
+}
+
+bool AgreesWithTwoViewDirection(const Rigid3d& cur_from_prev,
+                                const Eigen::Vector3d& two_view_direction, double max_deg) {
+  const double length = cur_from_prev.translation().norm();
+  if (!(length > 0.0) || !(two_view_direction.norm() > 0.0)) return true;
+  const double cosine = cur_from_prev.translation().dot(two_view_direction.normalized()) / length;
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / M_PI <= max_deg;
 }
 
 FrameLocalization LocalizeFrame(const std::vector<TrackObservation>& observations,

@@ -25,6 +25,15 @@ struct FrameLocalizerOptions {
   // (EPnP on minimal samples, threshold inlier_threshold_px, seeded) finds a new one.
   double min_inlier_ratio = 0.6;
   int ransac_iterations = 100;
+  // A localised pose whose direction of travel from the previous frame is further than this
+  // (degrees) from the frame pair's own two-view direction, while the car's last step agrees
+  // with the pair, is not taken; the prediction is kept. The map can bend where it sees few
+  // landmarks (a truck passing close on a highway): one pose 5 degrees off, and the road
+  // alignment, which warps with the map's direction, fails from then on. The last step's vote
+  // keeps the map where the pair is the one that is wrong (RANSAC fitted to a truck filling
+  // the view). On healthy rendered drives and KITTI map and pair differ by 1.5-3 degrees at
+  // the 99th percentile (docs/benchmarks.md, "The map's direction checked").
+  double max_direction_change_deg = 5.0;
 
   // Throws Error naming the first invalid option.
   void Check() const;
@@ -37,6 +46,12 @@ struct FrameLocalization {
   int num_landmarks = 0;  // landmarks the frame sees
   int num_inliers = 0;
 };
+
+// Whether the direction of travel of `cur_from_prev` is within `max_deg` of
+// `two_view_direction` (the frame pair's measured direction, a unit vector in the current
+// camera). A step without translation has no direction to disagree with.
+bool AgreesWithTwoViewDirection(const Rigid3d& cur_from_prev,
+                                const Eigen::Vector3d& two_view_direction, double max_deg);
 
 // The pose of a frame from the window's landmarks that it sees: motion-only refinement
 // started at `initial_cam_from_world` (the previous pose moved by the two-view motion), and

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/mapping/mapping_test_scene.h"
+#include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
@@ -85,6 +86,34 @@ TEST(LocalizeFrame, TooFewLandmarksIsNoPose) {
       LocalizeFrame(few, c.landmarks, c.scene.camera, c.scene.cam_from_world[c.frame], {});
   EXPECT_FALSE(result.ok);
   EXPECT_EQ(result.num_landmarks, 8);
+}
+
+TEST(AgreesWithTwoViewDirection, TakesAStepWithinTheAngleOfTheFramePairsDirection) {
+  const Eigen::Vector3d forward(0.0, 0.0, -1.0);  // cur_from_prev of a camera driving ahead
+  const auto tilted = [&](double deg) {
+    return MakeRigid3d(
+        Eigen::Matrix3d::Identity(),
+        2.5 * (Eigen::AngleAxisd(deg * M_PI / 180.0, Eigen::Vector3d::UnitX()) * forward));
+  };
+  EXPECT_TRUE(AgreesWithTwoViewDirection(tilted(0.0), forward, 5.0));
+  EXPECT_TRUE(AgreesWithTwoViewDirection(tilted(4.9), forward, 5.0));
+  EXPECT_FALSE(AgreesWithTwoViewDirection(tilted(5.1), forward, 5.0));
+  EXPECT_FALSE(AgreesWithTwoViewDirection(tilted(180.0), forward, 5.0));
+  // The two-view direction need not be of unit length.
+  EXPECT_TRUE(AgreesWithTwoViewDirection(tilted(3.0), 7.0 * forward, 5.0));
+  // No translation, or no measured direction: nothing to disagree with.
+  EXPECT_TRUE(AgreesWithTwoViewDirection(Rigid3d::Identity(), forward, 5.0));
+  EXPECT_TRUE(AgreesWithTwoViewDirection(tilted(30.0), Eigen::Vector3d::Zero(), 5.0));
+}
+
+TEST(FrameLocalizerOptions, TheDirectionCheckTakesAnAngleUpToHalfATurn) {
+  FrameLocalizerOptions options;
+  options.max_direction_change_deg = 180.0;
+  EXPECT_NO_THROW(options.Check());
+  options.max_direction_change_deg = 0.0;
+  EXPECT_THROW(options.Check(), Error);
+  options.max_direction_change_deg = 181.0;
+  EXPECT_THROW(options.Check(), Error);
 }
 
 }  // namespace

@@ -135,6 +135,18 @@ Rigid3d KeyframeBackend::PredictPose(const TwoViewMotion& motion) const {
   return cur_from_prev * last_cam_from_world_;
 }
 
+bool KeyframeBackend::PairOutvotesMap(const Rigid3d& localized_cam_from_world,
+                                      const TwoViewMotion& motion) const {
+  if (motion.status != MotionStatus::kOk) return false;
+  const double max_deg = options_.localization.max_direction_change_deg;
+  const Rigid3d map_step = localized_cam_from_world * last_cam_from_world_.inverse();
+  if (AgreesWithTwoViewDirection(map_step, motion.direction, max_deg)) return false;
+  // Two against one: the map's direction is dropped only when the car's last step goes the
+  // pair's way too. A pair that RANSAC fitted to a truck filling the view disagrees with both.
+  return last_cur_from_prev_.translation().norm() > 0.0 &&
+         AgreesWithTwoViewDirection(last_cur_from_prev_, motion.direction, max_deg);
+}
+
 bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const {
   const Keyframe& last = window_.keyframes().back();
   std::vector<Correspondence> correspondences;
@@ -176,7 +188,9 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
     const FrameLocalization localization = LocalizeFrame(
         frontend.observations, window_.landmarks(), camera_, cam_from_world, options_.localization);
     mapped.landmarks_seen = localization.num_landmarks;
-    if (localization.ok) cam_from_world = localization.cam_from_world;
+    if (localization.ok && !PairOutvotesMap(localization.cam_from_world, frontend.motion)) {
+      cam_from_world = localization.cam_from_world;
+    }
   }
 
   const Keyframe& last_keyframe = window_.keyframes().back();

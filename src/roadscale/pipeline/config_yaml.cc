@@ -195,6 +195,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("localization_inlier_threshold_px", &a.localization.inlier_threshold_px),
         Scalar("localization_min_inlier_ratio", &a.localization.min_inlier_ratio),
         Scalar("localization_ransac_iterations", &a.localization.ransac_iterations),
+        Scalar("localization_max_direction_deg", &a.localization.max_direction_change_deg),
         Scalar("ba_max_iterations", &a.bundle_adjustment.max_iterations),
         Scalar("ba_reprojection_loss_px", &a.bundle_adjustment.reprojection_loss_px),
         Scalar("ba_max_reprojection_error_px", &a.bundle_adjustment.max_reprojection_error_px),
