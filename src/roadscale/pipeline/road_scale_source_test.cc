@@ -34,14 +34,18 @@ FrontendFrame StreetFrame(MotionStatus status) {
   return frame;
 }
 
+ScaleQuery QueryOf(const FrontendFrame& frame, size_t position) {
+  ScaleQuery query;
+  query.position = position;
+  query.frontend = &frame;
+  return query;
+}
+
 TEST(RoadScaleSource, ScalesTheFrontendsMotionFromTheRoad) {
   RoadScaleSource source(KittiOdometryCamera(), ScaleEstimatorOptions());
   EXPECT_EQ(source.Name(), "road");
   const FrontendFrame frame = StreetFrame(MotionStatus::kOk);
-  ScaleQuery query;
-  query.position = 1;
-  query.frontend = &frame;
-  const ScaleResult result = source.StepLength(query);
+  const ScaleResult result = source.StepLength(QueryOf(frame, 1));
   ASSERT_TRUE(result.valid);
   EXPECT_TRUE(result.measured);
   EXPECT_EQ(result.status, "ok");
@@ -57,17 +61,12 @@ TEST(RoadScaleSource, ScalesTheFrontendsMotionFromTheRoad) {
 TEST(RoadScaleSource, APairWithoutRoadPointsHoldsTheLastLengthAsNotMeasured) {
   RoadScaleSource source(KittiOdometryCamera(), ScaleEstimatorOptions());
   const FrontendFrame street = StreetFrame(MotionStatus::kOk);
-  ScaleQuery query;
-  query.position = 1;
-  query.frontend = &street;
-  const ScaleResult fitted = source.StepLength(query);
+  const ScaleResult fitted = source.StepLength(QueryOf(street, 1));
   ASSERT_TRUE(fitted.measured);
 
   FrontendFrame no_road = street;
   no_road.correspondences.resize(3);
-  query.position = 2;
-  query.frontend = &no_road;
-  const ScaleResult held = source.StepLength(query);
+  const ScaleResult held = source.StepLength(QueryOf(no_road, 2));
   EXPECT_TRUE(held.valid);
   EXPECT_FALSE(held.measured);
   EXPECT_EQ(held.status, "held: too few points");
@@ -77,10 +76,7 @@ TEST(RoadScaleSource, APairWithoutRoadPointsHoldsTheLastLengthAsNotMeasured) {
 TEST(RoadScaleSource, FramesWithoutMotionHaveNoLength) {
   RoadScaleSource source(KittiOdometryCamera(), ScaleEstimatorOptions());
   const FrontendFrame frame = StreetFrame(MotionStatus::kPureRotation);
-  ScaleQuery query;
-  query.position = 1;
-  query.frontend = &frame;
-  const ScaleResult result = source.StepLength(query);
+  const ScaleResult result = source.StepLength(QueryOf(frame, 1));
   EXPECT_FALSE(result.valid);
   EXPECT_FALSE(result.measured);
   EXPECT_EQ(result.status.rfind("no motion: ", 0), 0U) << result.status;
