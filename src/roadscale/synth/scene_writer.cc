@@ -1,5 +1,6 @@
 #include "roadscale/synth/scene_writer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,7 @@ void CheckSequenceName(const std::string& sequence) {
 
 void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& options) {
   CheckSequenceName(options.sequence);
+  if (options.max_frames < 0) throw Error("max_frames must be >= 0 (0: every frame)");
   const fs::path root(options.out_dir);
   const fs::path sequence = root / "sequences" / options.sequence;
   for (const char* folder : {"image_0", "semantic", "depth", "moving"}) {
@@ -97,7 +99,9 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   planes.stream() << RoadPlaneFileHeader() << '\n';
   Trajectory trajectory;
   const bool tty = options.progress && isatty(2);
-  for (int i = 0; i < scene.frames(); ++i) {
+  const int frames =
+      options.max_frames > 0 ? std::min(options.max_frames, scene.frames()) : scene.frames();
+  for (int i = 0; i < frames; ++i) {
     const SynthFrame frame = scene.Render(i, options.colour);
     const std::string name = FrameName(i);
     WritePng(sequence / "image_0" / name, through_lens(frame.images.grey));
@@ -113,7 +117,7 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
     trajectory.world_from_cam.push_back(frame.world_from_cam);
     trajectory.timestamps.push_back(frame.time);
     if (tty) {
-      std::fprintf(stderr, "\rroadscale synth: frame %d / %d", i + 1, scene.frames());
+      std::fprintf(stderr, "\rroadscale synth: frame %d / %d", i + 1, frames);
       std::fflush(stderr);
     }
   }

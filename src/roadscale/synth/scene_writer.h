@@ -12,6 +12,10 @@ struct SceneWriterOptions {
   std::string sequence = "00";  // sequence folder name
   bool colour = false;          // also write image_2 (BGR)
   bool progress = false;        // print progress to stderr
+  // Writes only the scene's first `max_frames` frames (0: all). A scene's road and traffic
+  // are laid out for its whole length, so the beginning of a long drive is not the same as a
+  // short drive: this renders the one without the cost of the rest.
+  int max_frames = 0;
   // A lens's distortion (OpenCV's model, 5 or 8 coefficients; empty: none). The frames
   // (image_0, image_2) are written as that lens shows them and camera.yaml carries the
   // coefficients; calib.txt keeps the pinhole camera that the frame sources undistort the
@@ -22,7 +26,7 @@ struct SceneWriterOptions {
   std::vector<double> distortion;
 };
 
-// Renders every frame of `scene` and writes, below out_dir:
+// Renders the frames of `scene` (SceneWriterOptions::max_frames) and writes, below out_dir:
 //   sequences/NN/image_0/%06d.png   grey frames
 //   sequences/NN/image_2/%06d.png   colour frames (with `colour`)
 //   sequences/NN/semantic/%06d.png  Cityscapes train ids (8 bit)

@@ -153,6 +153,17 @@ ReprojectionStats CheckRoadPoints(const SyntheticScene& scene, const fs::path& r
   return stats;
 }
 
+// `camera` with images `divisor` times smaller: the scene's poses do not depend on it.
+PinholeCamera ScaledCamera(PinholeCamera camera, int divisor) {
+  camera.fx /= divisor;
+  camera.fy /= divisor;
+  camera.cx /= divisor;
+  camera.cy /= divisor;
+  camera.width /= divisor;
+  camera.height /= divisor;
+  return camera;
+}
+
 ReprojectionStats RenderAndCheck(const SceneOptions& options, int frames) {
   SyntheticScene scene(options, frames);
   testing::TempDir dir;
@@ -205,13 +216,7 @@ TEST(SyntheticScene, WrittenRoadPlaneGivesTheCameraHeightEveryFrame) {
   options.road.pieces = TwistyRoad();
   options.vehicle.camera_pitch_deg = 1.5;
   // The poses do not depend on the image size: render small frames.
-  PinholeCamera& camera = options.image.camera;
-  camera.fx /= 8.0;
-  camera.fy /= 8.0;
-  camera.cx /= 8.0;
-  camera.cy /= 8.0;
-  camera.width /= 8;
-  camera.height /= 8;
+  options.image.camera = ScaledCamera(options.image.camera, 8);
   SyntheticScene scene(options, 80);
   testing::TempDir dir;
   SceneWriterOptions writer;
@@ -272,6 +277,41 @@ TEST(SyntheticScene, SameSeedGivesIdenticalFilesWhateverTheThreads) {
   EXPECT_EQ(files, 4 * 5 + 5);  // 5 images a frame, calib, times, camera, planes, poses
   const fs::path image = fs::path("sequences") / "00" / "image_0" / "000003.png";
   EXPECT_NE(ReadFile(a.path() / image), ReadFile(c.path() / image));
+}
+
+TEST(SyntheticScene, TheFirstFramesOfALongDriveAreWrittenAsTheWholeDriveWritesThem) {
+  SceneOptions options = PresetSceneOptions("urban");
+  options.seed = 4;
+  options.image.camera = ScaledCamera(options.image.camera, 8);
+  SyntheticScene scene(options, 30);
+  testing::TempDir whole, first;
+  SceneWriterOptions writer;
+  writer.out_dir = whole.path().string();
+  WriteSyntheticSequence(scene, writer);
+  writer.out_dir = first.path().string();
+  writer.max_frames = 10;
+  WriteSyntheticSequence(scene, writer);
+
+  const fs::path sequence = fs::path("sequences") / "00";
+  int images = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(first.path() / sequence)) {
+    if (entry.path().extension() != ".png") continue;
+    const fs::path relative = fs::relative(entry.path(), first.path());
+    EXPECT_EQ(ReadFile(entry.path()), ReadFile(whole.path() / relative)) << relative;
+    ++images;
+  }
+  EXPECT_EQ(images, 10 * 4);  // grey, labels, depth, moving
+  EXPECT_FALSE(fs::exists(first.path() / sequence / "image_0" / "000010.png"));
+  const Trajectory all = ReadKittiTrajectory((whole.path() / "poses" / "00.txt").string());
+  const Trajectory ten = ReadKittiTrajectory((first.path() / "poses" / "00.txt").string());
+  ASSERT_EQ(ten.size(), 10u);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_TRUE(ten.world_from_cam[i].isApprox(all.world_from_cam[i], 1e-12)) << i;
+  }
+  EXPECT_EQ(ReadRoadPlanes((first.path() / sequence / "road_planes.txt").string()).size(), 10u);
+
+  writer.max_frames = -1;
+  EXPECT_THROW(WriteSyntheticSequence(scene, writer), Error);
 }
 
 TEST(SyntheticScene, StationaryFramesHaveIdenticalPoses) {
