@@ -94,12 +94,18 @@ void FrameLocalizerOptions::Check() const {
               "mapping.localization_max_direction_deg", "must be in (0, 180] (180: no check)");
 }
 
+std::optional<double> AngleToTwoViewDirectionDeg(const Rigid3d& cur_from_prev,
+                                                 const Eigen::Vector3d& two_view_direction) {
+  const double length = cur_from_prev.translation().norm();
+  if (!(length > 0.0) || !(two_view_direction.norm() > 0.0)) return std::nullopt;
+  const double cosine = cur_from_prev.translation().dot(two_view_direction.normalized()) / length;
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / M_PI;
+}
+
 bool AgreesWithTwoViewDirection(const Rigid3d& cur_from_prev,
                                 const Eigen::Vector3d& two_view_direction, double max_deg) {
-  const double length = cur_from_prev.translation().norm();
-  if (!(length > 0.0) || !(two_view_direction.norm() > 0.0)) return true;
-  const double cosine = cur_from_prev.translation().dot(two_view_direction.normalized()) / length;
-  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / M_PI <= max_deg;
+  const std::optional<double> angle = AngleToTwoViewDirectionDeg(cur_from_prev, two_view_direction);
+  return !angle || *angle <= max_deg;
 }
 
 FrameLocalization LocalizeFrame(const std::vector<TrackObservation>& observations,

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "roadscale/frontend/mono_frontend.h"
@@ -47,9 +48,14 @@ struct FrameLocalization {
   int num_inliers = 0;
 };
 
-// Whether the direction of travel of `cur_from_prev` is within `max_deg` of
-// `two_view_direction` (the frame pair's measured direction, a unit vector in the current
-// camera). A step without translation has no direction to disagree with.
+// The angle in degrees between the direction of travel of `cur_from_prev` and
+// `two_view_direction` (the frame pair's measured direction in the current camera, of any
+// length); nothing when either has no direction (a step without translation).
+std::optional<double> AngleToTwoViewDirectionDeg(const Rigid3d& cur_from_prev,
+                                                 const Eigen::Vector3d& two_view_direction);
+
+// Whether that angle is within `max_deg`. A step without translation has no direction to
+// disagree with.
 bool AgreesWithTwoViewDirection(const Rigid3d& cur_from_prev,
                                 const Eigen::Vector3d& two_view_direction, double max_deg);
 

@@ -106,6 +106,16 @@ TEST(AgreesWithTwoViewDirection, TakesAStepWithinTheAngleOfTheFramePairsDirectio
   EXPECT_TRUE(AgreesWithTwoViewDirection(tilted(30.0), Eigen::Vector3d::Zero(), 5.0));
 }
 
+TEST(AngleToTwoViewDirectionDeg, MeasuresTheAngleBetweenTheStepAndThePairsDirection) {
+  const Eigen::Vector3d forward(0.0, 0.0, -1.0);
+  const Rigid3d sideways =
+      MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, -1.0));
+  EXPECT_NEAR(*AngleToTwoViewDirectionDeg(sideways, 3.0 * forward), 45.0, 1e-9);
+  EXPECT_NEAR(*AngleToTwoViewDirectionDeg(sideways, -forward), 135.0, 1e-9);
+  EXPECT_FALSE(AngleToTwoViewDirectionDeg(Rigid3d::Identity(), forward).has_value());
+  EXPECT_FALSE(AngleToTwoViewDirectionDeg(sideways, Eigen::Vector3d::Zero()).has_value());
+}
+
 TEST(FrameLocalizerOptions, TheDirectionCheckTakesAnAngleUpToHalfATurn) {
   FrameLocalizerOptions options;
   options.max_direction_change_deg = 180.0;

@@ -73,7 +73,22 @@ void MappingOptions::Check() const {
 std::string MappedFrameCsvHeader() {
   return "keyframe,keyframe_reason,localization,map_scale,landmarks_seen,road_points,pair_scale,"
          "ba_iterations,ba_cost_before,ba_cost_after,ba_ms,window_keyframes,window_landmarks,"
-         "window_road_landmarks,ba_removed_observations,alignment_scale,window_road_pairs";
+         "window_road_landmarks,ba_removed_observations,alignment_scale,window_road_pairs,"
+         "map_pair_direction_deg,pair_outvoted_map";
+}
+
+std::string LocalizationName(MappedFrame::Localization localization) {
+  switch (localization) {
+    case MappedFrame::Localization::kKeyframe:
+      return "keyframe";
+    case MappedFrame::Localization::kMap:
+      return "map";
+    case MappedFrame::Localization::kInterpolated:
+      return "interpolated";
+    case MappedFrame::Localization::kStationary:
+      return "stationary";
+  }
+  return "unknown";
 }
 
 std::string FormatMappedFrameCsv(const MappedFrame& frame) {
@@ -83,11 +98,13 @@ std::string FormatMappedFrameCsv(const MappedFrame& frame) {
                                                                     : "none";
   std::ostringstream out;
   out << std::setprecision(6) << (frame.keyframe ? 1 : 0) << ',' << frame.keyframe_reason << ','
-      << frame.localization << ',' << scale << ',' << frame.landmarks_seen << ','
+      << LocalizationName(frame.localization) << ',' << scale << ',' << frame.landmarks_seen << ','
       << frame.road_points << ',' << frame.pair_scale << ',' << ba.iterations << ','
       << ba.initial_cost << ',' << ba.final_cost << ',' << ba.milliseconds << ','
       << ba.num_keyframes << ',' << ba.num_landmarks << ',' << ba.num_road_landmarks << ','
-      << ba.removed_observations << ',' << frame.alignment_scale << ',' << ba.num_road_pairs;
+      << ba.removed_observations << ',' << frame.alignment_scale << ',' << ba.num_road_pairs << ',';
+  if (frame.map_pair_direction_deg) out << *frame.map_pair_direction_deg;
+  out << ',' << (frame.pair_outvoted_map ? 1 : 0);
   return out.str();
 }
 
@@ -188,8 +205,14 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
     const FrameLocalization localization = LocalizeFrame(
         frontend.observations, window_.landmarks(), camera_, cam_from_world, options_.localization);
     mapped.landmarks_seen = localization.num_landmarks;
-    if (localization.ok && !PairOutvotesMap(localization.cam_from_world, frontend.motion)) {
-      cam_from_world = localization.cam_from_world;
+    if (localization.ok) {
+      if (frontend.motion.status == MotionStatus::kOk) {
+        mapped.map_pair_direction_deg =
+            AngleToTwoViewDirectionDeg(localization.cam_from_world * last_cam_from_world_.inverse(),
+                                       frontend.motion.direction);
+      }
+      mapped.pair_outvoted_map = PairOutvotesMap(localization.cam_from_world, frontend.motion);
+      if (!mapped.pair_outvoted_map) cam_from_world = localization.cam_from_world;
     }
   }
 
@@ -452,10 +475,10 @@ void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
     // has an output before it.
     if (own != nullptr) {
       mapped.world_from_cam = own->cam_from_world.inverse();
-      mapped.localization = "keyframe";
+      mapped.localization = MappedFrame::Localization::kKeyframe;
     } else if (mapped.stationary) {
       mapped.world_from_cam = last_output_world_from_cam_;
-      mapped.localization = "stationary";
+      mapped.localization = MappedFrame::Localization::kStationary;
     } else {
       // The arrival pose relative to its keyframe, in the scale of the interval then.
       Rigid3d keyframe_from_cam = frame.keyframe_from_cam;
@@ -476,7 +499,8 @@ void KeyframeBackend::Release(int last_frame, std::vector<MappedFrame>* out) {
                         options_.localization);
       mapped.world_from_cam =
           (localization.ok ? localization.cam_from_world : guess_cam_from_world).inverse();
-      mapped.localization = localization.ok ? "map" : "interpolated";
+      mapped.localization = localization.ok ? MappedFrame::Localization::kMap
+                                            : MappedFrame::Localization::kInterpolated;
     }
     last_output_world_from_cam_ = mapped.world_from_cam;
     out->push_back(std::move(mapped));

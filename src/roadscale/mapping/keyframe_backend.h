@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -85,17 +86,27 @@ struct MappedFrame {
   // pairs (kRoad, "road" in frames.csv), carried by the map from earlier ones (kCarried,
   // "carried"), or none yet (kNone, "none").
   enum class Scale { kRoad, kCarried, kNone } scale = Scale::kNone;
-  // How the pose was found when the frame was written: "keyframe" (bundle adjusted), "map"
-  // (localised against the final landmarks), "interpolated" (its arrival pose relative to
-  // the keyframe before it, rescaled with that interval), "stationary" (the previous pose).
-  std::string localization;
+  // How the pose was found when the frame was written (LocalizationName: the frames.csv
+  // column): bundle adjusted as a keyframe, localised against the final landmarks, its
+  // arrival pose relative to the keyframe before it rescaled with that interval
+  // (interpolated), or the previous pose (stationary).
+  enum class Localization { kKeyframe, kMap, kInterpolated, kStationary };
+  Localization localization = Localization::kKeyframe;
   int landmarks_seen = 0;  // landmarks visible when the frame arrived
+  // At arrival: the angle between the direction of travel of the map's localisation and the
+  // frame pair's two-view direction (nothing when either was missing), and whether the pair
+  // outvoted the map (KeyframeBackend::PairOutvotesMap: the prediction was kept).
+  std::optional<double> map_pair_direction_deg;
+  bool pair_outvoted_map = false;
   std::string keyframe_reason = "none";
   int road_points = 0;           // keyframes: road landmarks the pair selection marked
   double pair_scale = 0.0;       // keyframes: h0 / h of the pair's plane, metres per map unit
   double alignment_scale = 0.0;  // keyframes: the same from the road alignment (0: none)
   BundleAdjustmentReport bundle_adjustment;  // keyframes: the adjustment it started
 };
+
+// "keyframe", "map", "interpolated" or "stationary".
+std::string LocalizationName(MappedFrame::Localization localization);
 
 // The back end's columns of OUT/frames.csv, and one frame's values for them.
 std::string MappedFrameCsvHeader();

@@ -59,7 +59,7 @@ TEST(KeyframeBackend, GivesEveryFrameAMetricPoseInOrder) {
   // Keyframes by parallax: fewer than the frames, more than the window.
   EXPECT_LT(keyframes, 60);
   EXPECT_GT(keyframes, 10);
-  EXPECT_EQ(mapped.front().localization, "keyframe");
+  EXPECT_EQ(mapped.front().localization, MappedFrame::Localization::kKeyframe);
   EXPECT_EQ(mapped.back().scale, MappedFrame::Scale::kRoad);
   // The road makes the map metric: path length and end point within 1 %.
   const double truth_length = PathLength(truth);
@@ -171,6 +171,67 @@ TEST(KeyframeBackend, TheWindowStaysBounded) {
   }
   EXPECT_LE(largest, 7u);
   EXPECT_LT(backend.num_waiting(), 40u);
+}
+
+// The scene's frames through a back end with masks, frame `odd` replaced by `odd_frame`.
+std::vector<MappedFrame> RunBackendWithOneOddFrame(const testing::MappingTestScene& scene, int odd,
+                                                   const FrontendFrame& odd_frame) {
+  KeyframeBackend backend(scene.camera, scene.camera_height, MappingOptions(),
+                          ScaleEstimatorOptions(), TwoViewMotionOptions(), 100);
+  std::vector<MappedFrame> mapped;
+  for (int f = 0; f < static_cast<int>(scene.cam_from_world.size()); ++f) {
+    const FrontendFrame frontend = f == odd ? odd_frame : scene.Frontend(f, 0.2, 3);
+    for (MappedFrame& m : backend.AddFrame(frontend, RoadMask(scene, f))) {
+      mapped.push_back(std::move(m));
+    }
+  }
+  for (MappedFrame& m : backend.Finish()) mapped.push_back(std::move(m));
+  return mapped;
+}
+
+// The map's localisation of a frame against the frame pair's two-view direction and the
+// last step (KeyframeBackend::PairOutvotesMap): two against one.
+TEST(KeyframeBackend, TheFramePairAndTheLastStepOutvoteTheMapTogetherOnly) {
+  const auto scene = testing::MappingTestScene::Street(60, 0.8, 0.2);
+  constexpr int kOdd = 40;
+  const std::vector<MappedFrame> healthy = RunBackend(scene, 0.2, MappingOptions(), true);
+  ASSERT_EQ(healthy.size(), 60u);
+  for (const MappedFrame& m : healthy) {
+    EXPECT_FALSE(m.pair_outvoted_map) << m.frame_index;
+    if (m.map_pair_direction_deg) {
+      EXPECT_LT(*m.map_pair_direction_deg, 2.0) << m.frame_index;
+    }
+  }
+  EXPECT_TRUE(healthy[kOdd].map_pair_direction_deg.has_value());
+
+  // The map wrong: the frame's tracks show the camera 0.6 m to the side (a truck passing
+  // close moves most tracks so), while the frame pair and the last step go straight on.
+  testing::MappingTestScene shifted = scene;
+  shifted.cam_from_world[kOdd] =
+      MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(-0.6, 0.0, 0.0)) *
+      scene.cam_from_world[kOdd];
+  FrontendFrame map_wrong = shifted.Frontend(kOdd, 0.2, 3);
+  map_wrong.motion = scene.Frontend(kOdd, 0.2, 3).motion;
+  const std::vector<MappedFrame> outvoted = RunBackendWithOneOddFrame(scene, kOdd, map_wrong);
+  ASSERT_EQ(outvoted.size(), 60u);
+  ASSERT_TRUE(outvoted[kOdd].map_pair_direction_deg.has_value());
+  EXPECT_GT(*outvoted[kOdd].map_pair_direction_deg, 20.0);
+  EXPECT_TRUE(outvoted[kOdd].pair_outvoted_map);
+
+  // The pair wrong: its direction 30 degrees to the side (a pair fitted to a vehicle), the
+  // map and the last step agree: the map's pose is taken.
+  FrontendFrame pair_wrong = scene.Frontend(kOdd, 0.2, 3);
+  pair_wrong.motion.direction = Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()) *
+                                pair_wrong.motion.direction;
+  const std::vector<MappedFrame> kept = RunBackendWithOneOddFrame(scene, kOdd, pair_wrong);
+  ASSERT_EQ(kept.size(), 60u);
+  ASSERT_TRUE(kept[kOdd].map_pair_direction_deg.has_value());
+  EXPECT_NEAR(*kept[kOdd].map_pair_direction_deg, 30.0, 2.0);
+  EXPECT_FALSE(kept[kOdd].pair_outvoted_map);
+  for (int f = kOdd - 1; f <= kOdd + 1; ++f) {
+    const Eigen::Vector3d truth = scene.cam_from_world[f].inverse().translation();
+    EXPECT_LT((kept[f].world_from_cam.translation() - truth).norm(), 0.05) << f;
+  }
 }
 
 }  // namespace

@@ -273,7 +273,7 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
   record.step_length_m =
       (mapped.world_from_cam.translation() - last_written_world_from_cam_.translation()).norm();
   record.scale_valid = mapped.scale != MappedFrame::Scale::kNone;
-  record.scale_status = mapped.localization;
+  record.scale_status = LocalizationName(mapped.localization);
   if (record.motion_status == MotionStatus::kFirstFrame) {
     record.pose_update = PoseUpdate::kFirst;
     record.status = "first";
@@ -283,7 +283,8 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
   } else {
     // The frame pair's motion failed (a black frame, every track lost) and the map did not
     // localise the frame: its pose is the prediction, as the frame-to-frame host would say.
-    const bool measured = record.motion_status == MotionStatus::kOk || mapped.localization == "map";
+    const bool measured = record.motion_status == MotionStatus::kOk ||
+                          mapped.localization == MappedFrame::Localization::kMap;
     record.pose_update = measured ? PoseUpdate::kMotion
                          : record.motion_status == MotionStatus::kPureRotation
                              ? PoseUpdate::kRotationOnly
