@@ -2,9 +2,9 @@
 # Builds the libFuzzer targets of roadscale's parsers (clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer, in build-fuzz/) and runs each for SECONDS seconds from its seed
 # corpus in fuzz/corpus/<name>/. Installs clang and its fuzzer runtime (Debian packages) when
-# they are missing. Fails on the first target that crashes, leaks, hangs (10 s on one input)
-# or lets anything but roadscale::Error escape; the input that did it is kept in
-# $build/crashes/. Prints the executions of every target.
+# they are missing. Runs JOBS targets at once (default: one a core). Fails when a target
+# crashes, leaks, hangs (10 s on one input) or lets anything but roadscale::Error escape; the
+# input that did it is kept in $build/crashes/. Prints the executions of every target.
 #
 #   scripts/fuzz.sh 20              # 20 s per target
 #   JOBS=1 scripts/fuzz.sh 600      # longer runs
@@ -58,23 +58,39 @@ scratch_parent=/dev/shm
 [[ -d "$scratch_parent" && -w "$scratch_parent" ]] || scratch_parent="${TMPDIR:-/tmp}"
 scratch="$(mktemp -d -p "$scratch_parent" roadscale_fuzz.XXXXXX)"
 trap 'rm -rf "$scratch"' EXIT
-summary=()
-for name in "${targets[@]}"; do
+# Runs one target; its exit status goes to $build/$name.status.
+fuzz_target() {
+  local name="$1" status=0
   # New inputs go to a scratch corpus, never into the repository's seeds.
-  work="$build/corpus/$name"
-  mkdir -p "$work"
-  log="$build/$name.log"
-  status=0
-  TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  local work="$build/corpus/$name"
+  mkdir -p "$work" "$scratch/$name"
+  TMPDIR="$scratch/$name" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     "$build/fuzz/${name}_fuzzer" -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$build/crashes/$name-" \
-    "$work" "fuzz/corpus/$name" >"$log" 2>&1 || status=$?
+    "$work" "fuzz/corpus/$name" >"$build/$name.log" 2>&1 || status=$?
+  echo "$status" >"$build/$name.status"
+}
+
+# JOBS targets at a time (default: one a core); each fuzzer is one process on one core.
+jobs_at_once="${JOBS:-$(nproc)}"
+for name in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= jobs_at_once)); do wait -n || true; done
+  fuzz_target "$name" &
+done
+wait
+
+summary=()
+failed=0
+for name in "${targets[@]}"; do
+  log="$build/$name.log"
   runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")"
-  if [[ $status -ne 0 ]]; then
+  if [[ "$(cat "$build/$name.status")" != 0 ]]; then
     tail -n 40 "$log"
     echo "fuzz: $name FAILED after ${runs:-?} executions (input kept in $build/crashes/)"
-    exit 1
+    failed=1
+    continue
   fi
   summary+=("$(printf '%-14s %10s executions in %s s, 0 crashes' "$name" "$runs" "$seconds")")
 done
-printf 'fuzz: %s\n' "${summary[@]}"
+((${#summary[@]} == 0)) || printf 'fuzz: %s\n' "${summary[@]}"
+exit "$failed"

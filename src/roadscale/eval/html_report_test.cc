@@ -18,11 +18,6 @@ namespace {
 
 const double kNaN = std::nan("");
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 size_t Count(const std::string& text, const std::string& what) {
   size_t n = 0;
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -214,7 +209,7 @@ TEST(HtmlReport, WritesAtomicallyAndReplacesAnOldReport) {
   WriteHtmlReport(path, input);
   input.title = "second version";
   WriteHtmlReport(path, input);
-  const std::string html = ReadAll(path);
+  const std::string html = testing::ReadFileBytes(path);
   EXPECT_EQ(html, RenderHtmlReport(input));
   EXPECT_NE(html.find("<h1>second version</h1>"), std::string::npos);
   // No temporary file is left beside it.

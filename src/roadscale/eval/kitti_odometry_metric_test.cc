@@ -13,14 +13,6 @@ namespace roadscale {
 namespace {
 
 // Poses with identity rotation at (0, 0, z) for z = 0, 1, ..., frames - 1: 1 m steps.
-std::vector<Rigid3d> StraightMetreSteps(int frames) {
-  std::vector<Rigid3d> poses;
-  for (int i = 0; i < frames; ++i) {
-    poses.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, i)));
-  }
-  return poses;
-}
-
 // An independent double-precision reading of the devkit's definition, written differently
 // on purpose: rigid inverses instead of general ones, the error's translation length taken
 // before rotating it (rotations keep lengths), the angle from Eigen's AngleAxis, segment
@@ -96,7 +88,7 @@ TEST(KittiOdometryMetric, HandBuiltThreeSegments) {
   // 131 poses 1 m apart along z: 100 m segments start at frames 0, 10 and 20 and end at
   // 101, 111 and 121 (frame 100 is exactly 100 m on, which does not exceed 100 m); a start
   // at 30 would need frame 131. No longer length fits.
-  const std::vector<Rigid3d> gt = StraightMetreSteps(131);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(131);
   std::vector<Rigid3d> est = gt;
   // Segment 0 -> 101: the estimate ends 3 m to the side: |t| = 3, t_err 0.03.
   est[101].translation() += Eigen::Vector3d(3, 0, 0);
@@ -142,7 +134,7 @@ TEST(KittiOdometryMetric, HandBuiltThreeSegments) {
 
 TEST(KittiOdometryMetric, PerLengthMeansAndPooledMeanOverAllLengths) {
   // 221 poses 1 m apart: 100 m segments start at 0..110 (12), 200 m at 0 and 10 (2).
-  const std::vector<Rigid3d> gt = StraightMetreSteps(221);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(221);
   std::vector<Rigid3d> est = gt;
   // Every frame 10 % further along than the truth: every segment's error is 10 % of the
   // true distance it covers, i.e. 0.1 * 101 / 100 for 100 m and 0.1 * 201 / 200 for 200 m.
@@ -254,7 +246,7 @@ TEST(KittiOdometryMetric, AgreesWithDoubleReferenceOnKitti05) {
 }
 
 TEST(KittiOdometryMetric, NoLengthFitsAShortTrajectory) {
-  const std::vector<Rigid3d> gt = StraightMetreSteps(46);  // 45 m
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(46);  // 45 m
   const KittiOdometryResult result = EvaluateKittiOdometry(gt, gt);
   EXPECT_EQ(result.n_segments(), 0);
   EXPECT_FALSE(result.t_err);
@@ -274,12 +266,12 @@ TEST(KittiOdometryMetric, RotationErrorFormula) {
 }
 
 TEST(KittiOdometryMetric, PathDistancesAreFloatSums) {
-  const std::vector<Rigid3d> gt = StraightMetreSteps(5);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(5);
   EXPECT_EQ(KittiPathDistances(gt), (std::vector<float>{0, 1, 2, 3, 4}));
 }
 
 TEST(KittiOdometryMetric, RejectsMismatchedOrEmptyInput) {
-  const std::vector<Rigid3d> gt = StraightMetreSteps(20);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(20);
   const std::vector<Rigid3d> shorter(gt.begin(), gt.end() - 1);
   try {
     EvaluateKittiOdometry(gt, shorter);
@@ -296,7 +288,7 @@ TEST(KittiOdometryMetric, RejectsMismatchedOrEmptyInput) {
 }
 
 TEST(KittiOdometryMetric, OptionsAreChecked) {
-  const std::vector<Rigid3d> gt = StraightMetreSteps(20);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(20);
   KittiMetricOptions options;
   options.step_frames = 0;
   EXPECT_THROW(EvaluateKittiOdometry(gt, gt, options), Error);

@@ -19,11 +19,6 @@
 namespace roadscale {
 namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 TEST(Plots, WritesPngAndSvgOfEachFigure) {
   const std::vector<Rigid3d> gt = testing::CurvyDrive(1200, 1.0);
   const std::vector<Rigid3d> est = testing::PerturbedEstimate(gt, 11, 0.05, 0.02, 2e-4);
@@ -41,7 +36,7 @@ TEST(Plots, WritesPngAndSvgOfEachFigure) {
     EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS) << png;
     EXPECT_EQ(cairo_image_surface_get_width(image), 800) << png;
     cairo_surface_destroy(image);
-    const std::string svg_text = ReadAll(svg);
+    const std::string svg_text = testing::ReadFileBytes(svg);
     EXPECT_NE(svg_text.find("<svg"), std::string::npos) << svg;
     EXPECT_NE(svg_text.find("<path"), std::string::npos) << svg;
   }
@@ -184,11 +179,11 @@ TEST(Plots, InMemorySvgIsTheWrittenFile) {
   testing::TempDir dir;
   WriteEvaluationPlots(dir.path().string(), gt, est, kitti);
   EXPECT_EQ(WithoutSurfaceNumbers(RenderTopViewSvg(gt, est)),
-            WithoutSurfaceNumbers(ReadAll(dir.File("trajectory_top_view.svg"))));
+            WithoutSurfaceNumbers(testing::ReadFileBytes(dir.File("trajectory_top_view.svg"))));
   EXPECT_EQ(WithoutSurfaceNumbers(RenderKittiErrorSvg(kitti, KittiErrorKind::kTranslation)),
-            WithoutSurfaceNumbers(ReadAll(dir.File("t_err_vs_length.svg"))));
+            WithoutSurfaceNumbers(testing::ReadFileBytes(dir.File("t_err_vs_length.svg"))));
   EXPECT_EQ(WithoutSurfaceNumbers(RenderKittiErrorSvg(kitti, KittiErrorKind::kRotation)),
-            WithoutSurfaceNumbers(ReadAll(dir.File("r_err_vs_length.svg"))));
+            WithoutSurfaceNumbers(testing::ReadFileBytes(dir.File("r_err_vs_length.svg"))));
 }
 
 TEST(Plots, TopViewWithoutGroundTruthDrawsTheEstimate) {

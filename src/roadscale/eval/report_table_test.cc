@@ -7,17 +7,9 @@
 namespace roadscale {
 namespace {
 
-std::vector<Rigid3d> StraightMetreSteps(int frames) {
-  std::vector<Rigid3d> poses;
-  for (int i = 0; i < frames; ++i) {
-    poses.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, i)));
-  }
-  return poses;
-}
-
 TEST(ReportTable, SaysWhichLengthsFit) {
   // 145 m: only 100 m segments fit.
-  const std::vector<Rigid3d> gt = StraightMetreSteps(146);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(146);
   std::vector<Rigid3d> est = gt;
   for (Rigid3d& pose : est) pose.translation() *= 1.1;
   const std::string table = FormatEvaluationTable(EvaluateTrajectory(gt, est));
@@ -34,7 +26,7 @@ TEST(ReportTable, SaysWhichLengthsFit) {
 }
 
 TEST(ReportTable, SaysWhenNoLengthFits) {
-  const std::vector<Rigid3d> gt = StraightMetreSteps(46);
+  const std::vector<Rigid3d> gt = testing::StraightMetreSteps(46);
   const std::string table = FormatEvaluationTable(EvaluateTrajectory(gt, gt));
   EXPECT_NE(table.find("undefined: no segment of 100 m fits a 45.0 m trajectory"),
             std::string::npos)

@@ -20,6 +20,15 @@ inline Rigid3d YawPitchStep(double yaw, double pitch, const Eigen::Vector3d& tra
   return MakeRigid3d(rotation, translation);
 }
 
+// `frames` poses one metre apart straight along the camera's z axis.
+inline std::vector<Rigid3d> StraightMetreSteps(int frames) {
+  std::vector<Rigid3d> poses;
+  for (int i = 0; i < frames; ++i) {
+    poses.push_back(MakeRigid3d(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, i)));
+  }
+  return poses;
+}
+
 // A car-like drive in the KITTI camera frame (y down, z forward): `frames` poses about
 // `step_m` apart, turning left and right and rising and falling a little.
 inline std::vector<Rigid3d> CurvyDrive(int frames, double step_m) {

@@ -3,13 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/geometry/umeyama.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
-
-constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 Eigen::Matrix3Xd Positions(const std::vector<Rigid3d>& world_from_cam) {
   Eigen::Matrix3Xd positions(3, world_from_cam.size());

@@ -5,17 +5,13 @@
 #include <cmath>
 #include <string>
 
+#include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
 
 #include <Eigen/Geometry>
 
 namespace roadscale {
 namespace {
-
-double MillisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 // Whether `pixel`, rounded and clamped to the image, lies on the non-zero part of `mask`.
 bool IsOnMask(const cv::Mat& mask, const Eigen::Vector2d& pixel) {

@@ -5,12 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/frontend/frontend_test_util.h"
+#include "roadscale/geometry/angles.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
-
-constexpr double kDeg = 180.0 / M_PI;
 
 struct Normalised {
   std::vector<Eigen::Vector2d> prev;
@@ -39,8 +38,8 @@ TEST(SampsonRefinement, ConvergesToTheTruthFromAPerturbedStart) {
       RefineRelativePoseSampson(R0, t0, data.prev, data.cur, camera.fx, {});
   EXPECT_GT(result.initial_rms_px, 1.0);
   EXPECT_LT(result.final_rms_px, 1e-6);
-  EXPECT_LT(RotationAngle(result.rotation.transpose() * R) * kDeg, 1e-6);
-  EXPECT_LT(std::acos(std::min(1.0, result.direction.dot(t))) * kDeg, 1e-5);
+  EXPECT_LT(RotationAngle(result.rotation.transpose() * R) * kDegreesPerRadian, 1e-6);
+  EXPECT_LT(std::acos(std::min(1.0, result.direction.dot(t))) * kDegreesPerRadian, 1e-5);
   EXPECT_NEAR(result.direction.norm(), 1.0, 1e-12);
   EXPECT_GT(result.iterations, 0);
 }

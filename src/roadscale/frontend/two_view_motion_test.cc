@@ -9,20 +9,19 @@
 
 #include "roadscale/frontend/frontend_test_util.h"
 #include "roadscale/frontend/sampson_refinement.h"
+#include "roadscale/geometry/angles.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
 
-constexpr double kDeg = 180.0 / M_PI;
-
 double RotationErrorDeg(const Eigen::Matrix3d& estimate, const Eigen::Matrix3d& truth) {
-  return RotationAngle(estimate.transpose() * truth) * kDeg;
+  return RotationAngle(estimate.transpose() * truth) * kDegreesPerRadian;
 }
 
 double DirectionErrorDeg(const Eigen::Vector3d& estimate, const Eigen::Vector3d& truth) {
   const double c = estimate.normalized().dot(truth.normalized());
-  return std::acos(std::clamp(c, -1.0, 1.0)) * kDeg;
+  return std::acos(std::clamp(c, -1.0, 1.0)) * kDegreesPerRadian;
 }
 
 // cur_from_prev translation of a camera whose centre moves by `centre_motion` (in the

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "roadscale/testing/error_of.h"
 #include "roadscale/testing/temp_dir.h"
 #include "roadscale/util/error.h"
 
@@ -13,17 +14,7 @@ using ::testing::HasSubstr;
 using testing::TempDir;
 using testing::WriteTextFile;
 
-// The message of the Error `read` throws; fails the test when it throws nothing.
-template <typename Function>
-std::string ErrorOf(Function read) {
-  try {
-    read();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return "";
-}
+using testing::ErrorOf;
 
 CameraSetup ExampleSetup() {
   CameraSetup setup;

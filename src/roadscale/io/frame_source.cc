@@ -15,18 +15,12 @@
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
+#include "roadscale/util/text_parsing.h"
 
 namespace roadscale {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Trim(const std::string& text) {
-  const size_t begin = text.find_first_not_of(" \t");
-  if (begin == std::string::npos) return "";
-  const size_t end = text.find_last_not_of(" \t");
-  return text.substr(begin, end - begin + 1);
-}
 
 bool IsAllDigits(const std::string& text) {
   return !text.empty() &&

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/io/kitti_calib.h"
+#include "roadscale/testing/error_of.h"
 #include "roadscale/testing/shared_data.h"
 #include "roadscale/testing/temp_dir.h"
 #include "roadscale/util/error.h"
@@ -23,16 +24,7 @@ using ::testing::HasSubstr;
 using testing::TempDir;
 using testing::WriteTextFile;
 
-template <typename Function>
-std::string ErrorOf(Function read) {
-  try {
-    read();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return "";
-}
+using testing::ErrorOf;
 
 constexpr int kWidth = 32;
 constexpr int kHeight = 24;

@@ -11,13 +11,6 @@
 namespace roadscale {
 namespace {
 
-std::string Trim(const std::string& text) {
-  const size_t begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return "";
-  const size_t end = text.find_last_not_of(" \t\r\n");
-  return text.substr(begin, end - begin + 1);
-}
-
 // Index into KittiCalib::P for "P0".."P3", 4 for "Tr", -1 for any other key.
 int KnownRow(const std::string& key) {
   if (key.size() == 2 && key[0] == 'P' && key[1] >= '0' && key[1] <= '3') return key[1] - '0';

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "roadscale/testing/error_of.h"
 #include "roadscale/testing/shared_data.h"
 #include "roadscale/testing/temp_dir.h"
 #include "roadscale/util/error.h"
@@ -18,16 +19,7 @@ using ::testing::HasSubstr;
 using testing::TempDir;
 using testing::WriteTextFile;
 
-template <typename Function>
-std::string ErrorOf(Function read) {
-  try {
-    read();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return "";
-}
+using testing::ErrorOf;
 
 const char* const kIdentityRow = " 1 0 0 0 0 1 0 0 0 0 1 0\n";
 

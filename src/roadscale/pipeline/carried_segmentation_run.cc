@@ -13,15 +13,12 @@
 #include "roadscale/pipeline/segmentation_service.h"
 #include "roadscale/pipeline/stage_thread.h"
 #include "roadscale/segmentation/mask_carrying.h"
+#include "roadscale/util/elapsed_time.h"
 
 namespace roadscale {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double MillisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // A tracked frame with what the scale stage needs to complete its road mask.
 struct CarriedFrame {

@@ -15,16 +15,13 @@
 #include "roadscale/pipeline/carried_segmentation_run.h"
 #include "roadscale/pipeline/stage_thread.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
+#include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double MillisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 bool IsImageFile(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();

@@ -15,6 +15,7 @@
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/segmentation/segmentation_masks.h"
+#include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/line_file.h"
 
@@ -22,10 +23,6 @@ namespace roadscale {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double MillisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 std::ofstream OpenOutput(const std::string& path) {
   std::ofstream file(path, std::ios::out | std::ios::trunc);

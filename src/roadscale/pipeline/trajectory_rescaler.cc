@@ -9,7 +9,9 @@
 #include <sstream>
 #include <utility>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/scale/road_model_check.h"
+#include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/median.h"
 
@@ -17,13 +19,6 @@
 
 namespace roadscale {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / M_PI;
-
-double MillisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 // The VO's motion from pose a to pose b, as cur_from_prev.
 Rigid3d StepMotion(const Trajectory& trajectory, size_t b) {
@@ -324,9 +319,10 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
     const SampsonRefinementResult refined = RefineRelativePoseSampson(
         rotation, direction, prev_normalized, cur_normalized, camera_.fx, options_.refinement);
     step.refinement_rotation_deg =
-        RotationAngle(refined.rotation * rotation.transpose()) * kRadToDeg;
+        RotationAngle(refined.rotation * rotation.transpose()) * kDegreesPerRadian;
     step.refinement_direction_deg =
-        std::acos(std::clamp(refined.direction.normalized().dot(direction), -1.0, 1.0)) * kRadToDeg;
+        std::acos(std::clamp(refined.direction.normalized().dot(direction), -1.0, 1.0)) *
+        kDegreesPerRadian;
     if (step.refinement_rotation_deg <= options_.max_refinement_rotation_deg &&
         step.refinement_direction_deg <= options_.max_refinement_direction_deg) {
       rotation = refined.rotation;

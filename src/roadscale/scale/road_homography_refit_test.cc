@@ -5,14 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/scale/synthetic_road_scene.h"
 
 #include <Eigen/Geometry>
 
 namespace roadscale {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct RoadTracks {
   std::vector<Eigen::Vector2d> prev;
@@ -48,10 +47,10 @@ Rigid3d UnitBaseline(const Rigid3d& motion) {
 }
 
 TEST(RoadHomographyRefit, ExactTracksGiveTheExactPlaneFromAWrongStart) {
-  const double pitch = 1.5 * kDeg;
+  const double pitch = 1.5 * kRadiansPerDegree;
   const Plane road{Eigen::Vector3d(0.02, std::cos(pitch), std::sin(pitch)).normalized(), 1.65};
   const double step = 1.1;
-  const Rigid3d motion = testing::DriveAlongRoad(road, step, 1.0 * kDeg);
+  const Rigid3d motion = testing::DriveAlongRoad(road, step, 1.0 * kRadiansPerDegree);
   const RoadTracks tracks = Track(road, motion, 0.0, 3);
   ASSERT_GT(tracks.indices.size(), 100u);
   const Plane start{Eigen::Vector3d(0.0, 1.0, 0.03).normalized(), 1.4 / step};
@@ -75,7 +74,7 @@ TEST(RoadHomographyRefit, ExactTracksGiveTheExactPlaneFromAWrongStart) {
 
 TEST(RoadHomographyRefit, TransferMatchesTheProjectionOfThePlanePoint) {
   const Plane road{Eigen::Vector3d(0.0, 0.999, 0.02).normalized(), 1.5};
-  const Rigid3d motion = testing::DriveAlongRoad(road, 0.9, 2.0 * kDeg);
+  const Rigid3d motion = testing::DriveAlongRoad(road, 0.9, 2.0 * kRadiansPerDegree);
   // The road point 1 m right of and 9 m ahead of the camera.
   const Eigen::Vector3d above(1.0, 0.0, 9.0);
   const Eigen::Vector3d point =
@@ -95,9 +94,9 @@ TEST(RoadHomographyRefit, TransferMatchesTheProjectionOfThePlanePoint) {
 TEST(RoadHomographyRefit, RefiningTheRotationRemovesAPitchErrorOfTheMotion) {
   const Plane road{Eigen::Vector3d::UnitY(), 1.65};
   const double step = 1.0;
-  const Rigid3d motion = testing::DriveAlongRoad(road, step, 0.5 * kDeg);
+  const Rigid3d motion = testing::DriveAlongRoad(road, step, 0.5 * kRadiansPerDegree);
   const Eigen::Matrix3d pitch_error =
-      Eigen::AngleAxisd(0.05 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();
+      Eigen::AngleAxisd(0.05 * kRadiansPerDegree, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Rigid3d given = MakeRigid3d(pitch_error * motion.linear(), motion.translation());
   double rotation_fixed_error = 0.0;
   for (uint32_t seed : {1U, 2U, 3U, 4U}) {
@@ -109,7 +108,8 @@ TEST(RoadHomographyRefit, RefiningTheRotationRemovesAPitchErrorOfTheMotion) {
                             KittiOdometryCamera(), road, options);
     ASSERT_TRUE(refit);
     EXPECT_LT(std::abs(refit->plane.height * step / 1.65 - 1.0), 0.005) << "seed " << seed;
-    EXPECT_NEAR(refit->rotation_change_rad, 0.05 * kDeg, 0.01 * kDeg) << "seed " << seed;
+    EXPECT_NEAR(refit->rotation_change_rad, 0.05 * kRadiansPerDegree, 0.01 * kRadiansPerDegree)
+        << "seed " << seed;
 
     options.refine_rotation = false;
     const std::optional<RoadHomographyRefit> fixed =
@@ -127,7 +127,7 @@ TEST(RoadHomographyRefit, RefiningTheRotationRemovesAPitchErrorOfTheMotion) {
 TEST(RoadHomographyRefit, ATravelPriorFollowsARoadThatBendsAwayFromTheCarsPlane) {
   const Plane flat{Eigen::Vector3d::UnitY(), 1.65};
   const Rigid3d motion = testing::DriveAlongRoad(flat, 1.0, 0.0);
-  const double bend = 0.6 * kDeg;
+  const double bend = 0.6 * kRadiansPerDegree;
   const Plane ahead{Eigen::Vector3d(0.0, std::cos(bend), std::sin(bend)), 1.65};
   const RoadTracks tracks = Track(ahead, motion, 0.0, 9);
   const auto height_error = [&](bool tangent, double prior) {

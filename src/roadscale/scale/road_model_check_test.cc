@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/scale/road_plane.h"
 #include "roadscale/scale/synthetic_road_scene.h"
@@ -12,10 +13,10 @@
 namespace roadscale {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
 Plane PlaneOfPitch(double pitch_deg) {
-  return {Eigen::Vector3d(0.0, std::cos(pitch_deg * kDeg), std::sin(pitch_deg * kDeg)), 1.65};
+  return {Eigen::Vector3d(0.0, std::cos(pitch_deg * kRadiansPerDegree),
+                          std::sin(pitch_deg * kRadiansPerDegree)),
+          1.65};
 }
 
 std::vector<Eigen::Vector2d> ProjectAll(const std::vector<Eigen::Vector3d>& points) {
@@ -79,7 +80,7 @@ TEST(RoadModelCheck, RoadOfKnownPitchAgainstMotionOfKnownGrade) {
     const std::optional<Eigen::Vector3d> crossing =
         ExpectedRoadNormal(testing::DriveAlongRoad(opposite, 1.0, 0.0), options);
     ASSERT_TRUE(crossing.has_value());
-    EXPECT_NEAR(AngleBetween(*crossing, road.normal), 10.0 * kDeg, 1e-9);
+    EXPECT_NEAR(AngleBetween(*crossing, road.normal), 10.0 * kRadiansPerDegree, 1e-9);
     EXPECT_TRUE(CheckRoadModel(pixels, points, *crossing, options).kept.empty());
   }
 }
@@ -94,7 +95,9 @@ TEST(RoadModelCheck, ThresholdIsTheAngleToTheExpectedNormal) {
     EXPECT_EQ(kept, std::abs(pitch_deg) < 5.0 ? points.size() : 0U) << pitch_deg;
   }
   // The same holds across the road (roll), where a pitch-only test would see nothing.
-  Plane rolled{Eigen::Vector3d(std::sin(6.0 * kDeg), std::cos(6.0 * kDeg), 0.0), 1.65};
+  Plane rolled{
+      Eigen::Vector3d(std::sin(6.0 * kRadiansPerDegree), std::cos(6.0 * kRadiansPerDegree), 0.0),
+      1.65};
   const auto points = testing::PointsOnPlane(rolled, 50, -6, 6, 5, 25, 32);
   EXPECT_TRUE(CheckRoadModel(ProjectAll(points), points, expected, options).kept.empty());
   options.max_angle_deg = 7.0;

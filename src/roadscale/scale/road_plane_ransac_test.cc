@@ -5,13 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/scale/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // A road of pitch 3 degrees and roll 1 degree 1.65 m below the camera, 300 points with 1 %
 // height noise, and 200 outliers (40 %): half scattered over car bodies and bushes, half on a
@@ -24,7 +23,8 @@ struct NoisyRoad {
 NoisyRoad MakeNoisyRoad(uint32_t seed) {
   NoisyRoad scene;
   scene.road.normal =
-      Eigen::Vector3d(-std::sin(1.0 * kDeg), std::cos(3.0 * kDeg), std::sin(3.0 * kDeg))
+      Eigen::Vector3d(-std::sin(1.0 * kRadiansPerDegree), std::cos(3.0 * kRadiansPerDegree),
+                      std::sin(3.0 * kRadiansPerDegree))
           .normalized();
   scene.road.height = 1.65;
   std::mt19937 generator(seed);
@@ -55,7 +55,8 @@ TEST(RoadPlaneRansac, RecoversHeightWithinHalfAPercentAtFortyPercentOutliers) {
         FitRoadPlaneRansac(scene.points, Eigen::Vector3d::UnitY(), RoadPlaneRansacOptions());
     ASSERT_EQ(fit.status, RoadPlaneFit::Status::kOk);
     EXPECT_LT(std::abs(fit.plane.height / 1.65 - 1.0), 0.005) << "seed " << seed;
-    EXPECT_LT(AngleBetween(fit.plane.normal, scene.road.normal), 0.5 * kDeg) << "seed " << seed;
+    EXPECT_LT(AngleBetween(fit.plane.normal, scene.road.normal), 0.5 * kRadiansPerDegree)
+        << "seed " << seed;
     // The outliers are 40 % of the points; a few of them lie near the road by chance.
     EXPECT_NEAR(fit.inlier_ratio, 0.6, 0.05) << "seed " << seed;
     int outlier_inliers = 0;

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/geometry/angles.h"
+
 namespace roadscale {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // A camera pitched down by `pitch_rad` above a level road: level_from_cam.
 Eigen::Matrix3d PitchedDown(double pitch_rad) {
@@ -16,7 +16,7 @@ Eigen::Matrix3d PitchedDown(double pitch_rad) {
 
 TEST(RoadPlane, PitchedCameraSeesRisingRoadWithPositivePitch) {
   for (double pitch_deg : {-5.0, 5.0}) {
-    const Eigen::Matrix3d level_from_cam = PitchedDown(pitch_deg * kDeg);
+    const Eigen::Matrix3d level_from_cam = PitchedDown(pitch_deg * kRadiansPerDegree);
     // Its optical axis points below the horizon when pitched down (y is down).
     EXPECT_EQ((level_from_cam * Eigen::Vector3d::UnitZ()).y() > 0.0, pitch_deg > 0.0);
     const auto cam = [&](const Eigen::Vector3d& level) {
@@ -26,9 +26,10 @@ TEST(RoadPlane, PitchedCameraSeesRisingRoadWithPositivePitch) {
         cam({0, 1.65, 5}), cam({2, 1.65, 20}), cam({-3, 1.65, 9}), Eigen::Vector3d::UnitY());
     ASSERT_TRUE(plane.has_value());
     EXPECT_NEAR(plane->height, 1.65, 1e-12);
-    EXPECT_NEAR(plane->PitchRad(), pitch_deg * kDeg, 1e-12);
+    EXPECT_NEAR(plane->PitchRad(), pitch_deg * kRadiansPerDegree, 1e-12);
     EXPECT_NEAR(plane->RollRad(), 0.0, 1e-12);
-    EXPECT_TRUE(plane->normal.isApprox(RoadNormalFromCameraPitch(pitch_deg * kDeg), 1e-12));
+    EXPECT_TRUE(
+        plane->normal.isApprox(RoadNormalFromCameraPitch(pitch_deg * kRadiansPerDegree), 1e-12));
     // Driving straight ahead on that road implies the same normal.
     const Rigid3d prev_from_cur = MakeRigid3d(Eigen::Matrix3d::Identity(), cam({0, 0, 1.2}));
     const std::optional<Eigen::Vector3d> from_motion =
@@ -42,7 +43,8 @@ TEST(RoadPlane, MotionOfKnownGradeImpliesRoadNormal) {
   for (double grade_deg : {-5.0, 5.0}) {
     // A level camera driving up (grade > 0) or down a slope: the travel direction rises
     // (y decreases) uphill.
-    const Eigen::Vector3d travel(0.0, -std::sin(grade_deg * kDeg), std::cos(grade_deg * kDeg));
+    const Eigen::Vector3d travel(0.0, -std::sin(grade_deg * kRadiansPerDegree),
+                                 std::cos(grade_deg * kRadiansPerDegree));
     const Rigid3d cur_from_prev = MakeRigid3d(Eigen::Matrix3d::Identity(), -0.9 * travel);
     const std::optional<Eigen::Vector3d> direction = TravelDirection(cur_from_prev);
     ASSERT_TRUE(direction.has_value());
@@ -51,7 +53,7 @@ TEST(RoadPlane, MotionOfKnownGradeImpliesRoadNormal) {
     ASSERT_TRUE(normal.has_value());
     EXPECT_NEAR(normal->dot(travel), 0.0, 1e-12);
     EXPECT_GT(normal->y(), 0.0);
-    EXPECT_NEAR(std::atan2(normal->z(), normal->y()), grade_deg * kDeg, 1e-12);
+    EXPECT_NEAR(std::atan2(normal->z(), normal->y()), grade_deg * kRadiansPerDegree, 1e-12);
   }
 }
 

@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/scale/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kStep = 1.2;  // metres between the two cameras
 
 ScaleEstimatorOptions Unfiltered() {
@@ -40,7 +40,7 @@ TEST(ScaleEstimator, StreetWithWallsAndACarGivesScaleWithinOnePercent) {
     EXPECT_TRUE(estimate.has_scale);
     EXPECT_LT(std::abs(estimate.raw_scale / kStep - 1.0), 0.01) << "seed " << seed;
     EXPECT_EQ(estimate.scale, estimate.raw_scale);
-    EXPECT_LT(AngleBetween(estimate.plane.normal, road.normal), 1.0 * kDeg);
+    EXPECT_LT(AngleBetween(estimate.plane.normal, road.normal), 1.0 * kRadiansPerDegree);
     EXPECT_NEAR(estimate.plane.height * estimate.raw_scale, 1.65, 1e-9);
     // Counts shrink stage by stage, and the plane's inliers are road points.
     EXPECT_EQ(estimate.num_tracks, static_cast<int>(pair.prev_pixels.size()));
@@ -64,7 +64,8 @@ TEST(ScaleEstimator, StreetWithWallsAndACarGivesScaleWithinOnePercent) {
 
 TEST(ScaleEstimator, RoadOfKnownPitchWithARoadMask) {
   for (double pitch_deg : {-5.0, 5.0}) {
-    const Plane road{Eigen::Vector3d(0, std::cos(pitch_deg * kDeg), std::sin(pitch_deg * kDeg)),
+    const Plane road{Eigen::Vector3d(0, std::cos(pitch_deg * kRadiansPerDegree),
+                                     std::sin(pitch_deg * kRadiansPerDegree)),
                      1.65};
     const testing::TwoViewObservations pair = StreetPair(road, 7, -0.02);
     // The segmentation also calls the car's pixels road: the geometry must reject them.
@@ -76,7 +77,7 @@ TEST(ScaleEstimator, RoadOfKnownPitchWithARoadMask) {
     ASSERT_EQ(estimate.status, ScaleStatus::kOk);
     EXPECT_TRUE(estimate.used_road_mask);
     EXPECT_LT(std::abs(estimate.raw_scale / kStep - 1.0), 0.01) << pitch_deg;
-    EXPECT_NEAR(estimate.plane.PitchRad(), pitch_deg * kDeg, 1.0 * kDeg);
+    EXPECT_NEAR(estimate.plane.PitchRad(), pitch_deg * kRadiansPerDegree, 1.0 * kRadiansPerDegree);
     for (int track : estimate.road_track_indices) {
       EXPECT_LT(std::abs(road.SignedDistance(pair.points[track])), 0.1) << pitch_deg;
     }

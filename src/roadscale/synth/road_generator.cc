@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "roadscale/geometry/angles.h"
+
 namespace roadscale::synth {
-namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
-
-}  // namespace
-
 std::vector<RoadPiece> GenerateRoadPieces(const RoadOptions& options, double start, double length,
                                           Rng& rng) {
   std::vector<RoadPiece> pieces;
@@ -28,7 +24,7 @@ std::vector<RoadPiece> GenerateRoadPieces(const RoadOptions& options, double sta
       piece.length = rng.Uniform(options.straight_min, options.straight_max);
       if (pieces.empty()) piece.length += start;
       piece.curvature = 0.0;
-      piece.bank = rng.Uniform(-0.3, 0.3) * options.bank_max_deg * kDegToRad;
+      piece.bank = rng.Uniform(-0.3, 0.3) * options.bank_max_deg * kRadiansPerDegree;
     } else {
       const double direction = rng.Bernoulli(0.5) ? 1.0 : -1.0;
       double radius, angle;
@@ -44,10 +40,10 @@ std::vector<RoadPiece> GenerateRoadPieces(const RoadOptions& options, double sta
       piece.curvature = direction / radius;
       // The curvature ramps in over this piece's transition and out over the next one's,
       // so the heading changes by about curvature * length.
-      piece.length = std::max(1.0, angle * kDegToRad * radius);
+      piece.length = std::max(1.0, angle * kRadiansPerDegree * radius);
       piece.transition = std::min(options.transition, 0.4 * piece.length);
       // Bank into the curve: the outer edge is higher.
-      piece.bank = -direction * rng.Uniform(0.3, 1.0) * options.bank_max_deg * kDegToRad;
+      piece.bank = -direction * rng.Uniform(0.3, 1.0) * options.bank_max_deg * kRadiansPerDegree;
     }
     total += piece.length;
     pieces.push_back(piece);

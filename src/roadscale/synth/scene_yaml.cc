@@ -7,13 +7,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/yaml_file.h"
 
 namespace roadscale::synth {
 namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
 
 int LineOf(const YAML::Node& node) {
   const YAML::Mark mark = node.Mark();
@@ -166,7 +165,7 @@ void ReadRoad(Block& b, RoadOptions* o, const std::string& path) {
     if (radius != 0.0) piece.curvature = 1.0 / radius;
     piece_block.Get("grade", &piece.grade);
     piece_block.Get("bank_deg", &bank_deg);
-    piece.bank = bank_deg * kDegToRad;
+    piece.bank = bank_deg * kRadiansPerDegree;
     piece_block.Get("transition", &piece.transition);
     piece_block.Finish();
     o->pieces.push_back(piece);

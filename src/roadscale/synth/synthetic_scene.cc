@@ -5,13 +5,13 @@
 #include <functional>
 #include <thread>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/synth/road_generator.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::synth {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kNearDistance = 0.1;
 
 }  // namespace
@@ -52,8 +52,8 @@ SyntheticScene::SyntheticScene(const SceneOptions& options, int frames)
   const double u_begin = -30.0;
   index_ = std::make_unique<RoadIndex>(*line_, u_begin - 60.0, u_end + 60.0);
 
-  const double elevation = options_.image.sun_elevation_deg * kDegToRad;
-  const double azimuth = options_.image.sun_azimuth_deg * kDegToRad;
+  const double elevation = options_.image.sun_elevation_deg * kRadiansPerDegree;
+  const double azimuth = options_.image.sun_azimuth_deg * kRadiansPerDegree;
   sun_ = Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
                          std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
 

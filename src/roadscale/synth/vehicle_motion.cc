@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "roadscale/geometry/angles.h"
+
 namespace roadscale::synth {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
 // Extra planned time beyond the last frame: the lead car replays the ego's motion ahead.
 constexpr double kMarginSeconds = 30.0;
 
@@ -68,7 +69,7 @@ VehicleMotion::VehicleMotion(const VehicleOptions& options, double duration, Rng
     double u = options.start_position + rng.Uniform(0.0, 1000.0 / options.bumps_per_km);
     while (u < end) {
       // One draw a statement (traffic.cc).
-      const double amplitude = options.bump_pitch_deg * kDegToRad * rng.Uniform(0.5, 1.0);
+      const double amplitude = options.bump_pitch_deg * kRadiansPerDegree * rng.Uniform(0.5, 1.0);
       bumps_.push_back({u, rng.Bernoulli(0.5) ? amplitude : -amplitude});
       u += rng.Uniform(0.3, 1.7) * 1000.0 / options.bumps_per_km;
     }
@@ -81,15 +82,15 @@ double VehicleMotion::Suspension(double time, double position, double speed, dou
   const double gain = std::min(1.0, speed / options_.suspension_speed);
   if (gain <= 0.0) return 0.0;
   if (roll) {
-    return gain * options_.roll_amplitude_deg * kDegToRad *
+    return gain * options_.roll_amplitude_deg * kRadiansPerDegree *
            std::sin(2.0 * M_PI * options_.roll_frequency_hz * time + roll_phase_);
   }
   double pitch =
-      gain * options_.pitch_amplitude_deg * kDegToRad *
+      gain * options_.pitch_amplitude_deg * kRadiansPerDegree *
       (std::sin(2.0 * M_PI * options_.pitch_frequency_hz * time + pitch_phase_) +
        0.3 * std::sin(2.0 * M_PI * 2.3 * options_.pitch_frequency_hz * time + 2.0 * pitch_phase_));
   // Braking dips the nose (the camera looks down), accelerating lifts it.
-  pitch += options_.pitch_per_acceleration_deg * kDegToRad * acceleration;
+  pitch += options_.pitch_per_acceleration_deg * kRadiansPerDegree * acceleration;
   // Bumps passed at speed ring down in time.
   for (const Bump& bump : bumps_) {
     if (bump.position > position) break;
@@ -125,9 +126,9 @@ VehicleState VehicleMotion::StateAt(double time) const {
     state.speed = speed_[j];
     state.acceleration = acceleration_[j];
   }
-  state.pitch = options_.camera_pitch_deg * kDegToRad +
+  state.pitch = options_.camera_pitch_deg * kRadiansPerDegree +
                 Suspension(time, state.position, state.speed, state.acceleration, false);
-  state.roll = options_.camera_roll_deg * kDegToRad +
+  state.roll = options_.camera_roll_deg * kRadiansPerDegree +
                Suspension(time, state.position, state.speed, state.acceleration, true);
   return state;
 }

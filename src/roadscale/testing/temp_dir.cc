@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include <unistd.h>
@@ -27,6 +28,11 @@ std::string WriteTextFile(const std::string& path, const std::string& contents) 
   file << contents;
   if (!file) throw std::runtime_error("cannot write test file " + path);
   return path;
+}
+
+std::string ReadFileBytes(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace roadscale::testing

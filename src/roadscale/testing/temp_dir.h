@@ -24,4 +24,7 @@ class TempDir {
 // Writes `contents` to `path` (creating parent folders) and returns the path.
 std::string WriteTextFile(const std::string& path, const std::string& contents);
 
+// The whole of the file at `path`, byte for byte ("" when it cannot be read).
+std::string ReadFileBytes(const std::string& path);
+
 }  // namespace roadscale::testing

@@ -13,6 +13,13 @@ bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 }  // namespace
 
+std::string Trim(std::string_view text) {
+  size_t begin = 0, end = text.size();
+  while (begin < end && IsSpace(text[begin])) ++begin;
+  while (end > begin && IsSpace(text[end - 1])) --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
 bool IsBlankOrComment(std::string_view line) {
   for (char c : line) {
     if (c == '#') return true;

@@ -7,6 +7,9 @@
 
 namespace roadscale {
 
+// `text` without the spaces, tabs and line ends around it.
+std::string Trim(std::string_view text);
+
 // Strips a '#' comment and surrounding white space; true when nothing is left.
 bool IsBlankOrComment(std::string_view line);
 

@@ -7,6 +7,13 @@
 namespace roadscale {
 namespace {
 
+TEST(TextParsing, TrimRemovesSpacesTabsAndLineEndsAroundTheText) {
+  EXPECT_EQ(Trim("  P0:\t\r\n"), "P0:");
+  EXPECT_EQ(Trim("a b"), "a b");
+  EXPECT_EQ(Trim(" \t\r\n"), "");
+  EXPECT_EQ(Trim(""), "");
+}
+
 TEST(TextParsing, ParsesNumbersWithExponentsAndTabs) {
   const auto numbers = ParseNumbers("1.5\t-2e-3  7 ", "f.txt", 3);
   ASSERT_EQ(numbers.size(), 3u);

@@ -8,7 +8,7 @@
 namespace roadscale {
 namespace {
 
-std::string ErrorOf(const std::string& text) {
+std::string YamlErrorOf(const std::string& text) {
   try {
     ParseYaml(text, "c.yaml");
   } catch (const Error& e) {
@@ -23,32 +23,33 @@ TEST(YamlFile, ParsesAValidDocument) {
 }
 
 TEST(YamlFile, ADuplicateKeyIsAnErrorNamingBothLines) {
-  EXPECT_EQ(ErrorOf("Camera:\n  fx: 1\n  fy: 2\n  fx: 3\n"),
+  EXPECT_EQ(YamlErrorOf("Camera:\n  fx: 1\n  fy: 2\n  fx: 3\n"),
             "c.yaml:4: key 'fx' appears twice in one mapping (first on line 2)");
 }
 
 TEST(YamlFile, ARepeatedBlockIsAnError) {
-  EXPECT_EQ(ErrorOf("Scale:\n  a: 1\nFrontend:\n  b: 2\nScale:\n  c: 3\n"),
+  EXPECT_EQ(YamlErrorOf("Scale:\n  a: 1\nFrontend:\n  b: 2\nScale:\n  c: 3\n"),
             "c.yaml:5: key 'Scale' appears twice in one mapping (first on line 1)");
 }
 
 TEST(YamlFile, DuplicatesInsideSequencesAndFlowMappings) {
-  EXPECT_EQ(ErrorOf("items:\n  - {a: 1, a: 2}\n"),
+  EXPECT_EQ(YamlErrorOf("items:\n  - {a: 1, a: 2}\n"),
             "c.yaml:2: key 'a' appears twice in one mapping (first on line 2)");
   // The same key in two different mappings is fine.
-  EXPECT_EQ(ErrorOf("a: {x: 1}\nb: {x: 2}\n"), "no error");
+  EXPECT_EQ(YamlErrorOf("a: {x: 1}\nb: {x: 2}\n"), "no error");
 }
 
 TEST(YamlFile, KeysMustBeNames) {
   // Found by the fuzzer: the config reader converted every key to a string, and an empty key
   // escaped as YAML::TypedBadConversion (an "internal error").
-  EXPECT_EQ(ErrorOf("Scale:\n  : 3\n"), "c.yaml:2: a key is empty (expected 'name: value')");
-  EXPECT_EQ(ErrorOf("? [a, b]\n: 1\n"), "c.yaml:1: a key must be a name, not a list or a mapping");
+  EXPECT_EQ(YamlErrorOf("Scale:\n  : 3\n"), "c.yaml:2: a key is empty (expected 'name: value')");
+  EXPECT_EQ(YamlErrorOf("? [a, b]\n: 1\n"),
+            "c.yaml:1: a key must be a name, not a list or a mapping");
 }
 
 TEST(YamlFile, SyntaxErrorNamesTheLine) {
-  EXPECT_EQ(ErrorOf("a: 1\nb: [1, 2\n").rfind("c.yaml:", 0), 0u);
-  EXPECT_NE(ErrorOf("a: 1\nb: [1, 2\n").find("invalid YAML"), std::string::npos);
+  EXPECT_EQ(YamlErrorOf("a: 1\nb: [1, 2\n").rfind("c.yaml:", 0), 0u);
+  EXPECT_NE(YamlErrorOf("a: 1\nb: [1, 2\n").find("invalid YAML"), std::string::npos);
 }
 
 TEST(YamlFile, NestedAliasesAreWalkedOnce) {
@@ -60,7 +61,7 @@ TEST(YamlFile, NestedAliasesAreWalkedOnce) {
     for (int i = 0; i < 10; ++i) text += (i ? ", *l" : "*l") + std::to_string(level - 1);
     text += "]\n";
   }
-  EXPECT_EQ(ErrorOf(text), "no error");
+  EXPECT_EQ(YamlErrorOf(text), "no error");
 }
 
 TEST(YamlFile, LoadYamlFileNamesAnUnreadableFile) {
