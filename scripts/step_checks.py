@@ -26,36 +26,16 @@ import math
 import os
 import sys
 
-
-def read_poses(path):
-    if not os.path.isfile(path):
-        sys.exit(f"{path}: no such file (expected a `roadscale run` output folder with ground truth)")
-    poses = []
-    with open(path) as lines:
-        for number, line in enumerate(lines, 1):
-            values = line.split()
-            if not values:
-                continue
-            if len(values) != 12:
-                sys.exit(f"{path}:{number}: expected 12 numbers, got {len(values)}")
-            v = [float(x) for x in values]
-            poses.append(([v[0:3], v[4:7], v[8:11]], [v[3], v[7], v[11]]))
-    return poses
+from error_split import length, read_poses, step
 
 
-def step_in_earlier_camera(a, b):
-    """The translation of b relative to a, in a's camera (R_a^T (t_b - t_a))."""
-    rotation, t_a = a
-    d = [b[1][i] - t_a[i] for i in range(3)]
-    return [sum(rotation[r][c] * d[r] for r in range(3)) for c in range(3)]
-
-
-def norm(v):
-    return math.sqrt(sum(x * x for x in v))
+def translation(pose):
+    return [pose[i][3] for i in range(3)]
 
 
 def angle_deg(u, v):
-    cosine = sum(x * y for x, y in zip(u, v)) / (norm(u) * norm(v))
+    cosine = sum(x * y for x, y in zip(u, v)) / math.sqrt(
+        sum(x * x for x in u) * sum(y * y for y in v))
     return math.degrees(math.acos(max(-1.0, min(1.0, cosine))))
 
 
@@ -79,12 +59,12 @@ def main():
     errors = []
     true_lengths, estimated_lengths = [0.0], [0.0]
     for k in range(1, len(estimate)):
-        true_step = step_in_earlier_camera(truth[k - 1], truth[k])
-        estimated_step = step_in_earlier_camera(estimate[k - 1], estimate[k])
-        true_lengths.append(norm(true_step))
-        estimated_lengths.append(norm(estimated_step))
+        # Both steps in the earlier frame's camera: the heading's drift before them does not count.
+        true_step, estimated_step = step(truth, k), step(estimate, k)
+        true_lengths.append(length(true_step))
+        estimated_lengths.append(length(estimated_step))
         if true_lengths[-1] >= args.min_step and estimated_lengths[-1] > 0.0:
-            errors.append((angle_deg(true_step, estimated_step), k))
+            errors.append((angle_deg(translation(true_step), translation(estimated_step)), k))
     if errors:
         ordered = sorted(e for e, _ in errors)
         worst, worst_frame = max(errors)
