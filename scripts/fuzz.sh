@@ -73,6 +73,10 @@ fuzz_target() {
 
 # JOBS targets at a time (default: one a core); each fuzzer is one process on one core.
 jobs_at_once="${JOBS:-$(nproc)}"
+if ! [[ "$jobs_at_once" =~ ^[1-9][0-9]*$ ]]; then
+  echo "fuzz: JOBS must be a whole number >= 1, got '$jobs_at_once'" >&2
+  exit 2
+fi
 for name in "${targets[@]}"; do
   while (($(jobs -rp | wc -l) >= jobs_at_once)); do wait -n || true; done
   fuzz_target "$name" &

@@ -41,8 +41,13 @@ if [[ -z "${ROADSCALE_SKIP_APT:-}" ]]; then
 fi
 
 build_dir=${BUILD_DIR:-build}
+unity=${ROADSCALE_UNITY_BUILD:-ON}
+if [[ "$unity" != ON && "$unity" != OFF ]]; then
+  echo "setup: ROADSCALE_UNITY_BUILD must be ON or OFF, got '$unity'" >&2
+  exit 1
+fi
 # shellcheck disable=SC2086  # CMAKE_ARGS is a list of arguments
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE="${CMAKE_BUILD_TYPE:-Release}" \
-  -DCMAKE_UNITY_BUILD="${ROADSCALE_UNITY_BUILD:-ON}" ${CMAKE_ARGS:-}
+  -DCMAKE_UNITY_BUILD="$unity" ${CMAKE_ARGS:-}
 cmake --build "$build_dir" -j"$(nproc)"
 echo "setup: built $build_dir/roadscale"
