@@ -152,12 +152,13 @@ Rigid3d KeyframeBackend::PredictPose(const TwoViewMotion& motion) const {
   return cur_from_prev * last_cam_from_world_;
 }
 
-bool KeyframeBackend::PairOutvotesMap(const Rigid3d& localized_cam_from_world,
+bool KeyframeBackend::PairOutvotesMap(std::optional<double> map_pair_direction_deg,
                                       const TwoViewMotion& motion) const {
-  if (motion.status != MotionStatus::kOk) return false;
   const double max_deg = options_.localization.max_direction_change_deg;
-  const Rigid3d map_step = localized_cam_from_world * last_cam_from_world_.inverse();
-  if (AgreesWithTwoViewDirection(map_step, motion.direction, max_deg)) return false;
+  if (motion.status != MotionStatus::kOk || !map_pair_direction_deg ||
+      *map_pair_direction_deg <= max_deg) {
+    return false;
+  }
   // Two against one: the map's direction is dropped only when the car's last step goes the
   // pair's way too. A pair that RANSAC fitted to a truck filling the view disagrees with both.
   return last_cur_from_prev_.translation().norm() > 0.0 &&
@@ -211,7 +212,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
             AngleToTwoViewDirectionDeg(localization.cam_from_world * last_cam_from_world_.inverse(),
                                        frontend.motion.direction);
       }
-      mapped.pair_outvoted_map = PairOutvotesMap(localization.cam_from_world, frontend.motion);
+      mapped.pair_outvoted_map = PairOutvotesMap(mapped.map_pair_direction_deg, frontend.motion);
       if (!mapped.pair_outvoted_map) cam_from_world = localization.cam_from_world;
     }
   }

@@ -148,13 +148,15 @@ class KeyframeBackend {
   };
 
   Rigid3d PredictPose(const TwoViewMotion& motion) const;
+  // Whether the frame pair's own direction of travel outvotes the map's localisation of the
+  // frame: the angle between their directions (nothing: no direction to compare) is more than
+  // FrameLocalizerOptions::max_direction_change_deg and the last step's direction sides with
+  // the pair.
+  bool PairOutvotesMap(std::optional<double> map_pair_direction_deg,
+                       const TwoViewMotion& motion) const;
   // A keyframe while the map is empty (the first pair, or after every landmark was lost) has
   // nothing to localise against: its pose relative to the last keyframe is the two frames'
   // own two-view motion, at the predicted distance. False when that fails.
-  // Whether the frame pair's own direction of travel outvotes the map's localisation of the
-  // frame: they differ by more than FrameLocalizerOptions::max_direction_change_deg and the
-  // last step's direction sides with the pair.
-  bool PairOutvotesMap(const Rigid3d& localized_cam_from_world, const TwoViewMotion& motion) const;
   bool BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const;
   void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
                    const Rigid3d& cam_from_world, MappedFrame* mapped);

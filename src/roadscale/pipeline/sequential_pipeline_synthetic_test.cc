@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -299,6 +300,18 @@ class UnevenSegmenter : public Segmenter {
   int failing_frame_;
 };
 
+// The default pipeline on a drive RenderDrive wrote, with its label masks, into dir/run: the
+// estimate and the ground truth.
+std::pair<Trajectory, Trajectory> RunWithLabelMasks(const FrameSourceOptions& source_options,
+                                                    const testing::TempDir& dir) {
+  const auto source = OpenFrameSource(source_options);
+  UnevenSegmenter segmenter(source_options.input + "/semantic", -1);
+  RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
+  const std::string out = dir.File("run");
+  RunPipeline(*source, {&segmenter}, road, PipelineOptions(), out, RunPipelineOptions());
+  return {ReadKittiTrajectory(out + "/poses_kitti.txt"), *source->ground_truth()};
+}
+
 std::string FileText(const std::string& path) {
   std::ifstream file(path);
   return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -462,15 +475,9 @@ TEST(SequentialPipelineSynthetic, BlankFramesNeitherBreakNorStretchThePath) {
   for (int frame : {25, 26, 27}) overwrite(frame, 0);
   overwrite(45, 255);
 
-  const auto source = OpenFrameSource(source_options);
-  UnevenSegmenter segmenter(source_options.input + "/semantic", -1);
-  RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
-  const std::string out = dir.File("run");
-  RunPipeline(*source, {&segmenter}, road, PipelineOptions(), out, RunPipelineOptions());
-  const Trajectory estimated = ReadKittiTrajectory(out + "/poses_kitti.txt");
-  const Trajectory& truth = *source->ground_truth();
+  const auto [estimated, truth] = RunWithLabelMasks(source_options, dir);
   ASSERT_EQ(estimated.size(), static_cast<size_t>(kFrames));
-  const std::vector<std::string> keyframe = Column(out + "/frames.csv", "keyframe");
+  const std::vector<std::string> keyframe = Column(dir.File("run/frames.csv"), "keyframe");
   for (int frame : {25, 26, 27, 45}) EXPECT_EQ(keyframe[frame], "0") << frame;
   for (int k = 1; k < kFrames; ++k) {
     const auto step = [k](const Trajectory& t) {
@@ -517,13 +524,7 @@ TEST(SequentialPipelineSynthetic, TheRoadAheadScalesAHighwayDriveWithoutSegmenta
 TEST(SequentialPipelineSynthetic, TheDirectionCheckKeepsAHighwayPassingATruckOnItsPath) {
   testing::TempDir dir;
   const FrameSourceOptions source_options = RenderDrive("highway", 300, dir, 7, 230);
-  const auto source = OpenFrameSource(source_options);
-  UnevenSegmenter segmenter(source_options.input + "/semantic", -1);
-  RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
-  const std::string out = dir.File("run");
-  RunPipeline(*source, {&segmenter}, road, PipelineOptions(), out, RunPipelineOptions());
-  const Trajectory estimated = ReadKittiTrajectory(out + "/poses_kitti.txt");
-  const Trajectory& truth = *source->ground_truth();
+  const auto [estimated, truth] = RunWithLabelMasks(source_options, dir);
   ASSERT_EQ(estimated.size(), truth.size());
   const double length = PathLength(truth);
   EXPECT_NEAR(PathLength(estimated) / length, 1.0, 0.02);
