@@ -25,6 +25,9 @@ struct CarriedFrame {
   TrackedFrame tracked;
   bool segmented = false;
   Eigen::Matrix3d road_step = Eigen::Matrix3d::Identity();  // cur_from_prev of the road
+  // The frontend's carried moving-object mask of the frame when it holds the objects where
+  // they were too (MaskCarryOptions::dynamic_in_place), else empty.
+  cv::Mat dynamic_mask;
 };
 
 // The frontend stage: tracks with carried masks, then asks the schedule whether the network
@@ -36,7 +39,8 @@ class CarriedFrontend {
       : pipeline_(pipeline),
         service_(service),
         carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames),
-        schedule_(camera, options.segmentation_schedule.keyframes) {}
+        schedule_(camera, options.segmentation_schedule.keyframes),
+        carry_in_place_(options.segmentation_schedule.carry.dynamic_in_place) {}
 
   CarriedFrame Track(const SegmentedFrame& input) {
     const int index = static_cast<int>(input.frame.index);
@@ -49,6 +53,7 @@ class CarriedFrontend {
       return carrier_.Masks(index, correspondences, take);
     });
     out.road_step = carrier_.last_step();
+    if (carry_in_place_) out.dynamic_mask = carrier_.last_dynamic_mask();
     out.segmented = schedule_.Decide(out.tracked.frontend, carrier_.carry_failed());
     if (out.segmented && !first) {
       service_.Submit(index, input.frame.image, FrameName(input.frame));
@@ -62,11 +67,14 @@ class CarriedFrontend {
   SegmentationService& service_;
   FrontendMaskCarrier carrier_;
   SegmentationSchedule schedule_;
+  bool carry_in_place_;
   bool started_ = false;
 };
 
 // The scale stage's road mask of each frame: a segmented frame's own, else the last segmented
-// frame's carried through the road homographies since.
+// frame's carried through the road homographies since, less the frame's carried moving-object
+// mask: a car that keeps pace with the camera stays where the carried road mask's hole for it
+// has moved on, and points on its bumper would put the road too high and the steps too long.
 class RoadMaskCompleter {
  public:
   explicit RoadMaskCompleter(SegmentationService& service) : service_(service) {}
@@ -85,7 +93,9 @@ class RoadMaskCompleter {
       SetRoadMask(road_, &tracked);
     } else {
       cur_from_road_ = carried.road_step * cur_from_road_;
-      SetRoadMask(CarryRoadMask(road_, cur_from_road_), &tracked);
+      cv::Mat road = CarryRoadMask(road_, cur_from_road_);
+      if (!road.empty() && !carried.dynamic_mask.empty()) road.setTo(0, carried.dynamic_mask);
+      SetRoadMask(road, &tracked);
     }
     return std::move(tracked);
   }

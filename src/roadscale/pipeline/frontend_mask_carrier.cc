@@ -28,6 +28,7 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
     anchor_ = take_fresh(frame_index);
     anchor_frame_ = frame_index;
     road_ = anchor_.road_mask;
+    dynamic_ = anchor_.dynamic_mask;
     return {anchor_.static_mask, anchor_.dynamic_mask};
   }
 
@@ -65,9 +66,9 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
   while (!steps_.empty() && steps_.front().first <= oldest_needed) steps_.pop_front();
 
   road_ = CarryRoadMask(anchor_.road_mask, cur_from_anchor_);
-  const cv::Mat dynamic = CarryDynamicMask(anchor_.dynamic_mask, cur_from_anchor_,
-                                           frame_index - anchor_frame_, options_);
-  FrontendMasks masks{StaticMaskOf(dynamic), dynamic};
+  dynamic_ = CarryDynamicMask(anchor_.dynamic_mask, cur_from_anchor_, frame_index - anchor_frame_,
+                              options_);
+  FrontendMasks masks{StaticMaskOf(dynamic_), dynamic_};
   if (due >= 0) {
     masks.segmented_frame = due;
     masks.segmented_dynamic_mask = anchor_.dynamic_mask;

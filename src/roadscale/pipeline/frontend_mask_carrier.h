@@ -36,6 +36,8 @@ class FrontendMaskCarrier {
   // measured, identity in the first frame), and whether it could not.
   const Eigen::Matrix3d& last_step() const { return last_step_; }
   bool carry_failed() const { return carry_failed_; }
+  // The last frame's carried moving-object mask (empty before the first segmented frame).
+  const cv::Mat& last_dynamic_mask() const { return dynamic_; }
 
  private:
   MaskCarryOptions options_;
@@ -46,7 +48,8 @@ class FrontendMaskCarrier {
   Eigen::Matrix3d cur_from_anchor_ = Eigen::Matrix3d::Identity();
   // (frame, its road homography from the frame before), back to the oldest pending frame.
   std::deque<std::pair<int, Eigen::Matrix3d>> steps_;
-  cv::Mat road_;  // this carrier's road mask of the last frame
+  cv::Mat road_;     // this carrier's road mask of the last frame
+  cv::Mat dynamic_;  // and its moving-object mask
   Eigen::Matrix3d last_step_ = Eigen::Matrix3d::Identity();
   bool carry_failed_ = false;
 };

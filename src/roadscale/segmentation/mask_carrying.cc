@@ -146,7 +146,8 @@ cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur
   Eigen::Matrix3d half_from_full;
   half_from_full << 0.5, 0.0, -0.25, 0.0, 0.5, -0.25, 0.0, 0.0, 1.0;
   const Eigen::Matrix3d half_homography = half_from_full * cur_from_src * half_from_full.inverse();
-  cv::Mat out(half.size(), CV_8UC1, cv::Scalar(0));
+  cv::Mat out =
+      options.dynamic_in_place ? half.clone() : cv::Mat(half.size(), CV_8UC1, cv::Scalar(0));
   const cv::Rect image(0, 0, half.cols, half.rows);
   // Parked cars along a street merge into one blob spanning many depths: each narrow strip of
   // the mask moves with the road under its own lowest pixel.

@@ -26,6 +26,14 @@ struct MaskCarryOptions {
   // tracks around parked cars and cost accuracy (docs/benchmarks.md, "Segmenting keyframes
   // only").
   double dynamic_growth_px_per_frame = 0.0;
+  // The moving-object mask is also kept where the segmented frame had it. Moving it with the
+  // road is right for a parked car; a car in traffic keeps pace with the camera and so keeps
+  // its pixels while the road moves under it (a car or truck close ahead or alongside in a
+  // jam). Which of the two an object does is unknown until the network sees the next frame,
+  // so the carried mask holds both: on a real city drive in dense traffic the carried masks
+  // otherwise let tracks and new features onto the vehicles beside and ahead, and the map
+  // found no road (docs/benchmarks.md, "Dense traffic: carried masks").
+  bool dynamic_in_place = true;
 
   // Throws Error naming the first invalid option.
   void Check() const;
@@ -46,9 +54,10 @@ cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_
 
 // A moving-object mask carried `frames` frames (at half resolution): cut into 16 px wide strips,
 // each blob of a strip moved as the road under its lowest pixel moves (and scaled by the road
-// homography's horizontal magnification there: a car stands upright on the road), then the whole
-// mask grown by dynamic_growth_px_per_frame per frame for the objects' own motion. Pieces whose
-// base the homography cannot map stay in place.
+// homography's horizontal magnification there: a car stands upright on the road), joined by the
+// mask where it was when `dynamic_in_place` (an object keeping pace with the camera), then the
+// whole mask grown by dynamic_growth_px_per_frame per frame for the objects' own motion. Pieces
+// whose base the homography cannot map stay in place.
 cv::Mat CarryDynamicMask(const cv::Mat& dynamic_mask, const Eigen::Matrix3d& cur_from_src,
                          int frames, const MaskCarryOptions& options);
 
