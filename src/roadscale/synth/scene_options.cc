@@ -128,6 +128,15 @@ void SceneryOptions::Check() const {
   CheckNonNegative(backdrop_trees, "Scenery.backdrop_trees");
 }
 
+void LabelErrorOptions::Check() const {
+  CheckOption(dynamic_erosion_px >= 0 && dynamic_erosion_px <= 50, "Labels.dynamic_erosion_px",
+              "must lie in [0, 50]");
+  CheckOption(dynamic_lag_frames >= 0 && dynamic_lag_frames <= 30, "Labels.dynamic_lag_frames",
+              "must lie in [0, 30]");
+  CheckOption(dynamic_dropout >= 0.0 && dynamic_dropout <= 1.0, "Labels.dynamic_dropout",
+              "must lie in [0, 1]");
+}
+
 void TextureOptions::Check() const {
   CheckOption(std::isfinite(road_contrast) && road_contrast >= 0.0 && road_contrast <= 5.0,
               "Texture.road_contrast", "must lie in [0, 5]");
@@ -165,6 +174,7 @@ void SceneOptions::Check() const {
   traffic.Check();
   scenery.Check();
   texture.Check();
+  labels.Check();
   image.Check();
 }
 

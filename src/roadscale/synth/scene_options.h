@@ -128,6 +128,21 @@ struct ImageOptions {
   void Check() const;
 };
 
+// Errors of a segmentation network's labels on real frames, for semantic_network/ beside the
+// exact semantic/ (all 0: not written). Each is what the shared ESPNetv2 does on KITTI's real
+// frames: outlines of cars a few pixels small at their edges, late on traffic that moves
+// across the image, and a car missing in one frame and back in the next.
+struct LabelErrorOptions {
+  int dynamic_erosion_px = 0;    // moving objects' outlines shrunk by this much
+  int dynamic_lag_frames = 0;    // moving objects labelled where they were this many frames ago
+  double dynamic_dropout = 0.0;  // chance that an object is missed (reads as road) in a frame
+
+  bool Any() const {
+    return dynamic_erosion_px > 0 || dynamic_lag_frames > 0 || dynamic_dropout > 0.0;
+  }
+  void Check() const;
+};
+
 struct SceneOptions {
   std::string preset = "urban";
   uint64_t seed = 1;
@@ -137,6 +152,7 @@ struct SceneOptions {
   SceneryOptions scenery;
   TextureOptions texture;
   ImageOptions image;
+  LabelErrorOptions labels;
 
   void Check() const;
 };

@@ -15,6 +15,7 @@
 #include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/synth/network_like_labels.h"
 #include "roadscale/synth/road_plane_file.h"
 #include "roadscale/util/error.h"
 
@@ -79,6 +80,11 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
     MakeDirectory(sequence / folder);
   }
   if (options.colour) MakeDirectory(sequence / "image_2");
+  std::optional<NetworkLikeLabels> network_labels;
+  if (scene.options().labels.Any()) {
+    MakeDirectory(sequence / "semantic_network");
+    network_labels.emplace(scene.options().labels, scene.options().seed);
+  }
   MakeDirectory(root / "poses");
 
   const SceneOptions& scene_options = scene.options();
@@ -107,6 +113,9 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
     WritePng(sequence / "image_0" / name, through_lens(frame.images.grey));
     if (options.colour) WritePng(sequence / "image_2" / name, through_lens(frame.images.colour));
     WritePng(sequence / "semantic" / name, frame.images.labels);
+    if (network_labels) {
+      WritePng(sequence / "semantic_network" / name, network_labels->Next(frame.images.labels));
+    }
     WritePng(sequence / "depth" / name, frame.images.depth);
     WritePng(sequence / "moving" / name, frame.images.moving);
     char line[160];

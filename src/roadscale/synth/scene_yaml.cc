@@ -236,6 +236,12 @@ void ReadTexture(Block& b, TextureOptions* o) {
   b.Get("shadows", &o->shadows);
 }
 
+void ReadLabels(Block& b, LabelErrorOptions* o) {
+  b.Get("dynamic_erosion_px", &o->dynamic_erosion_px);
+  b.Get("dynamic_lag_frames", &o->dynamic_lag_frames);
+  b.Get("dynamic_dropout", &o->dynamic_dropout);
+}
+
 void ReadImage(Block& b, ImageOptions* o) {
   b.Get("frame_rate", &o->frame_rate);
   b.Get("noise_sigma", &o->noise_sigma);
@@ -290,6 +296,7 @@ SceneOptions LoadSceneOptions(const std::string& preset, const std::string& yaml
       {"Texture",
        [](Block& b, SceneOptions* o, const std::string&) { ReadTexture(b, &o->texture); }},
       {"Image", [](Block& b, SceneOptions* o, const std::string&) { ReadImage(b, &o->image); }},
+      {"Labels", [](Block& b, SceneOptions* o, const std::string&) { ReadLabels(b, &o->labels); }},
       {"Camera", [](Block& b, SceneOptions* o,
                     const std::string&) { ReadCamera(b, &o->image.camera, &o->vehicle.h0); }},
   };
