@@ -190,6 +190,23 @@ if [[ "$mode" == "slurm_script" ]]; then
   [[ -x "$work/out/slurm/submit.sh" ]] || fail "submit.sh is not executable"
   expect_line "$work/log.txt" "must be on a filesystem every node of the cluster sees"
   [[ ! -e "$work/out/a" ]] || fail "--slurm ran a drive"
+  # Values that would end their #SBATCH line and run the rest as a command in every task
+  # (issue 30): refused with one line, before any file is written.
+  cd "$work"
+  for option in "--sbatch-option=--account=lab"$'\n'"touch PWNED" \
+    "--partition=short"$'\n'"touch PWNED" "--time=1:00:00"$'\n'"touch PWNED" \
+    "--partition=a b" "--time=an hour" "--sbatch-option=--comment=\$(touch PWNED)"; do
+    name="${option%%=*}"
+    expect_failure "^roadscale: error: $name '" \
+      "$roadscale" batch --manifest "$work/m.yaml" --out "$work/refused" --slurm "$option"
+  done
+  expect_failure "^roadscale: error: --sbatch-option '--account=lab\\\\ntouch PWNED': expected" \
+    "$roadscale" batch --manifest "$work/m.yaml" --out "$work/refused" --slurm \
+    "--sbatch-option=--account=lab"$'\n'"touch PWNED"
+  expect_failure "^roadscale: error: --out '$work/100%a': Slurm scripts need" \
+    "$roadscale" batch --manifest "$work/m.yaml" --out "$work/100%a" --slurm
+  [[ ! -e "$work/refused" && ! -e "$work/100%a" ]] || fail "a refused --slurm wrote files"
+  [[ ! -e PWNED ]] || fail "an option ran as a command"
   echo "batch slurm script: all checks passed"
   exit 0
 fi

@@ -62,16 +62,21 @@ std::vector<std::string> Summarize(const std::string& dir) {
   return batch::WriteSummaryFiles(dir, batch::SummarizeDrives(dir, batch::DriveNamesIn(dir)));
 }
 
-void WriteSlurm(const BatchArguments& arguments, const batch::BatchManifest& manifest) {
+batch::SlurmOptions SlurmOptionsOf(const BatchArguments& arguments, size_t drives) {
   batch::SlurmOptions options;
   options.roadscale = SelfPath();
   options.batch_input = BatchInputWords(arguments);
   options.out = Absolute(arguments.out);
-  options.drives = manifest.drives.size();
+  options.drives = drives;
   options.partition = arguments.partition;
   options.time = arguments.time;
   options.cpus_per_task = arguments.cpus_per_task;
   options.sbatch_options = arguments.sbatch_options;
+  return options;
+}
+
+void WriteSlurm(const BatchArguments& arguments, const batch::BatchManifest& manifest) {
+  const batch::SlurmOptions options = SlurmOptionsOf(arguments, manifest.drives.size());
   std::vector<std::string> names;
   for (const batch::BatchDrive& drive : manifest.drives) names.push_back(drive.name);
   batch::WriteDriveList(options.out, names);
@@ -127,6 +132,7 @@ void RunBatch(const BatchArguments& arguments) {
   }
   if (arguments.out.empty()) throw Error("--out DIR is required");
   if (arguments.submit && !arguments.slurm) throw Error("--submit goes with --slurm");
+  if (arguments.slurm) batch::CheckSlurmOptions(SlurmOptionsOf(arguments, 0));  // before any file
   CheckOption(arguments.jobs >= 1 && arguments.jobs <= 256, "--jobs", "must be 1..256");
   CheckOption(arguments.cpus_per_task >= 1, "--cpus-per-task", "must be at least 1");
 
