@@ -3,11 +3,13 @@
 # every fault part way through a run, ends with the documented exit code, exactly one line on
 # stderr naming the file (and line) or option at fault, and the rows written before the fault
 # intact. Prints how many cases ran.
-# Usage: bad_input_cli_test.sh ROADSCALE_BINARY [files|runs]
+# Usage: bad_input_cli_test.sh ROADSCALE_BINARY [files|runs|concurrent]
 #   files: eval, YAML, calib/times/images/trajectories, output folder, command line (fast);
 #   runs:  faults part way through `run` and `rescale` on a rendered sequence: a re-run into a
 #          used folder failing at a corrupt frame, SIGTERM and SIGINT while frames wait for the
-#          first scale, SIGTERM and SIGINT during `rescale`.
+#          first scale, SIGTERM and SIGINT during `rescale`;
+#   concurrent: a second run, rescale or batch into an output folder in use refuses, naming
+#          the holder; the lock of a holder killed with -9 is taken over.
 # Permission cases run the command as `nobody` when the test runs as root (root reads every
 # file); they are skipped when neither works.
 set -euo pipefail
@@ -62,6 +64,23 @@ check_pose_rows() {
 
 "$roadscale" synth --frames 40 --out "$out/data" >/dev/null 2>&1 || fail "synth failed"
 seq="$out/data/sequences/00"
+
+# $long: 400 frames (the 40 rendered ones there and back, $out/long/trajectory.txt with them),
+# so that no machine finishes a run before its signal; noroad.yaml keeps every frame waiting
+# for a first scale.
+make_long() {
+  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
+  long="$out/long/sequences/00"
+  mkdir -p "$long/image_0"
+  cp "$seq/calib.txt" "$seq/camera.yaml" "$long/"
+  for i in $(seq 0 399); do
+    k=$((i % 78))
+    ((k < 40)) || k=$((78 - k))
+    ln -s "$seq/image_0/$(printf %06d $k).png" "$long/image_0/$(printf %06d "$i").png"
+    sed -n "$((k + 1))p" "$out/data/poses/00.txt" >>"$out/long/trajectory.txt"
+  done
+  awk 'BEGIN { for (i = 0; i < 400; i++) printf "%e\n", i * 0.1 }' >"$long/times.txt"
+}
 
 if [[ "$mode" == "files" ]]; then
   # --- eval: pose rows that are not rigid, unreadable files ---------------------------------
@@ -309,19 +328,7 @@ if [[ "$mode" == "runs" ]]; then
   # SIGTERM and SIGINT part way: no road plane ever (the frames wait for the first scale), and
   # the signal must still write every frame read so far. The frame-to-frame host writes each
   # scaled frame at once, so the wait for the first row below works.
-  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
-  # 400 frames (the 40 rendered ones there and back, the trajectory with them), so that no
-  # machine finishes a run before its signal.
-  long="$out/long/sequences/00"
-  mkdir -p "$long/image_0"
-  cp "$seq/calib.txt" "$seq/camera.yaml" "$long/"
-  for i in $(seq 0 399); do
-    k=$((i % 78))
-    ((k < 40)) || k=$((78 - k))
-    ln -s "$seq/image_0/$(printf %06d $k).png" "$long/image_0/$(printf %06d "$i").png"
-    sed -n "$((k + 1))p" "$out/data/poses/00.txt" >>"$out/long/trajectory.txt"
-  done
-  awk 'BEGIN { for (i = 0; i < 400; i++) printf "%e\n", i * 0.1 }' >"$long/times.txt"
+  make_long
   for signal in TERM INT; do
     cases=$((cases + 1))
     run_dir="$out/signal_$signal"
@@ -372,6 +379,63 @@ if [[ "$mode" == "runs" ]]; then
     [[ "$(rows "$run_dir/rescale.csv")" -eq "$k" ]] || fail "rescale SIG$signal: rescale.csv rows"
   done
   echo "bad inputs (runs): $cases cases passed"
+  exit 0
+fi
+if [[ "$mode" == "concurrent" ]]; then
+  # Two processes into one output folder (issue 30: two batches lost rows of frames.csv and
+  # overwrote batch.json): the second refuses with one line naming the holder and touches
+  # nothing; the lock of a holder killed with -9 is taken over.
+  make_long
+  pid="" drive_pid=""
+  trap 'kill -9 $pid $drive_pid 2>/dev/null; rm -rf "$out"' EXIT  # no stopped process left
+  wait_for() {  # FILE: until it exists and is not empty
+    for _ in $(seq 1 400); do
+      [[ -s "$1" ]] && return 0
+      sleep 0.05
+    done
+    fail "$1 never appeared"
+  }
+  "$roadscale" run --kitti "$long" --no-segmentation --config "$out/noroad.yaml" --sequential \
+    --out "$out/held" >/dev/null 2>&1 &
+  pid=$!
+  wait_for "$out/held/.roadscale.lock"
+  kill -STOP "$pid"  # holds the folder for as long as the checks take, on any machine
+  in_use="held: output folder in use by process $pid on $(hostname) \(roadscale run\); wait for it"
+  expect_error 1 "$in_use" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
+    --out "$out/held"
+  expect_error 1 "$in_use" "$roadscale" rescale --trajectory "$out/long/trajectory.txt" \
+    --kitti "$long" --no-segmentation --out "$out/held"
+  printf 'drives:\n  - name: a\n    kitti: %s\n    no_segmentation: true\n' "$seq" >"$out/m.yaml"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/held"
+  [[ ! -e "$out/held/a" && ! -e "$out/held/batch.json" ]] ||
+    fail "a refused process changed the folder in use"
+  kill -9 "$pid"
+  wait "$pid" || true
+  [[ -s "$out/held/.roadscale.lock" ]] || fail "kill -9 left no stale lock to take over"
+  expect_ok "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/held"
+  check_pose_rows "$out/held" 40
+  [[ ! -e "$out/held/.roadscale.lock" ]] || fail "the lock outlived its run"
+
+  # Two batches into one folder, then --summarize and --slurm while the first runs; a `run`
+  # into the folder of the drive the batch is running.
+  printf 'drives:\n  - name: a\n    kitti: %s\n    no_segmentation: true\n    sequential: true\n    config: %s\n' \
+    "$long" "$out/noroad.yaml" >"$out/long.yaml"
+  "$roadscale" batch --manifest "$out/long.yaml" --out "$out/batch" >/dev/null 2>&1 &
+  pid=$!
+  wait_for "$out/batch/a/.roadscale.lock"
+  drive_pid="$(cut -d ' ' -f 1 "$out/batch/a/.roadscale.lock")"
+  kill -STOP "$pid" "$drive_pid"
+  in_use="batch: output folder in use by process $pid on $(hostname) \(roadscale batch\)"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/batch"
+  expect_error 1 "$in_use" "$roadscale" batch --summarize "$out/batch"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/batch" --slurm
+  expect_error 1 "batch/a: output folder in use by process $drive_pid on .* \(roadscale run\)" \
+    "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/batch/a"
+  [[ ! -e "$out/batch/slurm" && ! -e "$out/batch/summary.md" ]] ||
+    fail "a refused batch wrote into the folder in use"
+  kill -9 "$pid" "$drive_pid"
+  wait "$pid" || true
+  echo "bad inputs (concurrent): $cases cases passed"
   exit 0
 fi
 fail "unknown mode $mode"

@@ -19,6 +19,7 @@
 #include "roadscale/batch/summary_files.h"
 #include "roadscale/batch/summary_table.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/folder_lock.h"
 
 #include "commands.h"
 #include "drive_processes.h"
@@ -116,6 +117,8 @@ void RunBatch(const BatchArguments& arguments) {
     if (!arguments.manifest.empty() || !arguments.kitti_root.empty() || !arguments.out.empty()) {
       throw Error("--summarize DIR takes no --manifest, --kitti-root or --out");
     }
+    std::optional<FolderLock> lock;  // a missing folder is Summarize's error to report
+    if (fs::is_directory(arguments.summarize)) lock.emplace(arguments.summarize, "batch");
     for (const std::string& path : Summarize(arguments.summarize)) {
       std::cout << "Wrote:  " << path << '\n';
     }
@@ -140,6 +143,19 @@ void RunBatch(const BatchArguments& arguments) {
       arguments.manifest.empty()
           ? batch::KittiBatchManifest(arguments.kitti_root, arguments.sequences)
           : batch::ReadBatchManifest(arguments.manifest);
+  // The whole batch's files (batch.json, summary.*, slurm/) are written by one process at a
+  // time. The tasks of a Slurm array (--only-index) run side by side in the same folder by
+  // design: each drive's `roadscale run` locks that drive's folder instead.
+  std::optional<FolderLock> lock;
+  if (!arguments.only_index) {
+    std::error_code error;
+    fs::create_directories(arguments.out, error);
+    if (error || !fs::is_directory(arguments.out)) {
+      ThrowFileError(arguments.out, "cannot create the batch's output folder" +
+                                        (error ? " (" + error.message() + ")" : std::string()));
+    }
+    lock.emplace(arguments.out, "batch");
+  }
   if (arguments.slurm) {
     if (arguments.only_index) throw Error("--only-index is what the Slurm tasks run, not --slurm");
     WriteSlurm(arguments, manifest);

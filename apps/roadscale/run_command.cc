@@ -100,7 +100,7 @@ void RunRun(const RunArguments& arguments) {
   }
   config.pipeline.Check();
 
-  PrepareOutputFolder(arguments.out);
+  const FolderLock lock = PrepareOutputFolder(arguments.out, "run");
   FrameSourceOptions source_options;
   source_options.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
                         : !arguments.images.empty() ? FrameSourceType::kImageFolder
