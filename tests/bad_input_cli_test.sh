@@ -248,7 +248,7 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       --out "$out/denied.run"
     check_pose_rows "$out/denied.run" 5
     mkdir -m 555 "$out/read_only"
-    expect_error 1 "read_only/[a-z_]+\.(txt|yaml|csv): cannot" \
+    expect_error 1 "read_only/(\.roadscale\.lock|[a-z_]+\.(txt|yaml|csv)): cannot" \
       "${as_user[@]}" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
       --out "$out/read_only"
   fi
@@ -257,8 +257,10 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   if $can_deny; then
     mkdir -m 700 "$out/closed_folder"
     cp "$seq/image_0/000000.png" "$out/closed_folder/"
+    mkdir -m 777 "$out/closed.run"
     expect_error 1 "closed_folder: permission denied" "${as_user[@]}" "$roadscale" run \
-      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation --out "$out/r"
+      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation \
+      --out "$out/closed.run"
   fi
   mkdir "$out/no_images"
   expect_error 1 "no_images: no images" "$roadscale" run --images "$out/no_images" --camera "$seq/camera.yaml" \
@@ -410,7 +412,7 @@ if [[ "$mode" == "concurrent" ]]; then
   [[ ! -e "$out/held/a" && ! -e "$out/held/batch.json" ]] ||
     fail "a refused process changed the folder in use"
   kill -9 "$pid"
-  wait "$pid" || true
+  wait "$pid" 2>/dev/null || true
   [[ -s "$out/held/.roadscale.lock" ]] || fail "kill -9 left no stale lock to take over"
   expect_ok "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/held"
   check_pose_rows "$out/held" 40
@@ -434,7 +436,7 @@ if [[ "$mode" == "concurrent" ]]; then
   [[ ! -e "$out/batch/slurm" && ! -e "$out/batch/summary.md" ]] ||
     fail "a refused batch wrote into the folder in use"
   kill -9 "$pid" "$drive_pid"
-  wait "$pid" || true
+  wait "$pid" 2>/dev/null || true
   echo "bad inputs (concurrent): $cases cases passed"
   exit 0
 fi
