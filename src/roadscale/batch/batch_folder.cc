@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "roadscale/batch/drive_record.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -32,9 +32,7 @@ void WriteDriveList(const std::string& dir, const std::vector<std::string>& name
   }
   nlohmann::ordered_json json;
   json["drives"] = names;
-  std::ofstream file(ListPath(dir));
-  file << json.dump(2) << '\n';
-  if (!file.flush()) ThrowFileError(ListPath(dir), "cannot write the batch's list of drives");
+  WriteFileAtomically(ListPath(dir), json.dump(2) + '\n');
 }
 
 std::vector<std::string> DriveNamesIn(const std::string& dir) {

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -29,16 +30,7 @@ void WriteDriveRecord(const std::string& drive_dir, const DriveRecord& record) {
   json["error"] = record.error;
   json["wall_s"] = record.wall_s;
   json["outputs"] = record.outputs;
-  const std::string path = RecordPath(drive_dir);
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary);
-    file << json.dump(2) << '\n';
-    if (!file.flush()) ThrowFileError(temporary, "cannot write the drive's record");
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) ThrowFileError(path, "cannot write the drive's record (" + error.message() + ")");
+  WriteFileAtomically(RecordPath(drive_dir), json.dump(2) + '\n');
 }
 
 std::optional<DriveRecord> ReadDriveRecord(const std::string& drive_dir) {

@@ -4,9 +4,9 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::batch {
@@ -159,10 +159,7 @@ std::string WriteSlurmScripts(const SlurmOptions& options) {
   for (const auto& [name, text] :
        {std::pair{"drives.sbatch", &scripts.drives}, std::pair{"summary.sbatch", &scripts.summary},
         std::pair{"submit.sh", &scripts.submit}}) {
-    const std::string path = slurm + "/" + name;
-    std::ofstream file(path);
-    file << *text;
-    if (!file.flush()) ThrowFileError(path, "cannot write the Slurm script");
+    WriteFileAtomically(slurm + "/" + name, *text);
   }
   const std::string submit = slurm + "/submit.sh";
   fs::permissions(submit, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,

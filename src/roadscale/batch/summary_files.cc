@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::batch {
@@ -70,9 +70,7 @@ Json RowJson(const DriveRow& row) {
 }
 
 void WriteText(const std::string& path, const std::string& text) {
-  std::ofstream file(path);
-  file << text;
-  if (!file.flush()) ThrowFileError(path, "cannot write the batch summary");
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace
