@@ -146,7 +146,7 @@ if [[ "$mode" == "files" ]]; then
   printf 'Camera:\n  h0: 1e308\n' >"$out/h0.yaml"
   expect_error 1 "h0\.yaml:2: Camera\.h0: invalid option camera\.h0: .* got 1e\+308" \
     run_kitti --config "$out/h0.yaml" --out "$out/r"
-  expect_error 1 "invalid option h0: the camera height above the road must be in \(0, 100\] metres, got 1e\+308" \
+  expect_error 1 "invalid option h0: the camera height above the road must be in \[0\.05, 100\] metres, got 1e\+308" \
     run_kitti --h0 1e308 --out "$out/h0run"
   [[ ! -e "$out/h0run/poses_kitti.txt" ]] || fail "poses written despite --h0 1e308"
   expect_error 1 "invalid option h0: .* got 0" run_kitti --h0 0 --out "$out/h0run"
@@ -156,6 +156,48 @@ if [[ "$mode" == "files" ]]; then
     "$roadscale" run --images "$seq/image_0" --config "$out/fx.yaml" --out "$out/r"
   expect_error 1 "a_dir: cannot open camera YAML file: is a directory" \
     "$roadscale" run --images "$seq/image_0" --camera "$out/a_dir" --no-segmentation --out "$out/r"
+  # Issue 30: a camera YAML's unknown key, a lens whose undistortion blanks or folds the frames,
+  # a height or focal length no camera has (each ran before, every frame `ok`).
+  camera() {  # NAME LINES...: the rendered camera.yaml with Camera: lines added
+    local name="$1"
+    shift
+    { cat "$seq/camera.yaml"; printf '  %s\n' "$@"; } >"$out/$name"
+  }
+  run_images() { "$roadscale" run --images "$seq/image_0" --no-segmentation "$@"; }
+  for key in K1 s1 k7; do
+    camera "$key.yaml" "$key: 0.01"
+    expect_error 1 "$key\.yaml:11: unknown key 'Camera\.$key'" \
+      run_images --camera "$out/$key.yaml" --out "$out/r"
+  done
+  camera blank.yaml "k1: 1e6"
+  expect_error 1 "blank\.yaml:4: Camera: invalid option camera\.k1: 1e\+06 leaves 100 % of" \
+    run_images --camera "$out/blank.yaml" --out "$out/r"
+  camera fold.yaml "k1: -1"
+  expect_error 1 "fold\.yaml:4: Camera: invalid option camera\.k1: -1 folds the undistortion map" \
+    run_images --camera "$out/fold.yaml" --out "$out/r"
+  camera pole.yaml "k4: -1.5"
+  expect_error 1 "pole\.yaml:4: Camera: invalid option camera\.k4: -1\.5 makes the rational" \
+    run_images --camera "$out/pole.yaml" --out "$out/r"
+  expect_error 1 "invalid option h0: the camera height above the road must be in \[0\.05, 100\] metres, got 1e-300" \
+    run_kitti --h0 1e-300 --out "$out/r"
+  sed 's/^  fx: .*/  fx: 7.2e7/' "$seq/camera.yaml" >"$out/long_fx.yaml"
+  expect_error 1 "long_fx\.yaml:4: Camera: invalid option camera\.fx: 7\.2e\+07 px over an image side of 1241 px is no lens's focal length" \
+    run_images --camera "$out/long_fx.yaml" --out "$out/r"
+  for fx in 1e308 1e-300; do
+    cp -r "$seq" "$out/calib_$fx"
+    sed -i "s/^P0: [^ ]*/P0: $fx/" "$out/calib_$fx/calib.txt"
+    expect_error 1 "calib_$fx/calib\.txt: invalid option camera\.fx: .* is no lens's focal length" \
+      "$roadscale" run --kitti "$out/calib_$fx" --no-segmentation --out "$out/r"
+  done
+  # config_used.yaml keeps the lens: repeating the run with it gives the same poses.
+  camera lens.yaml "k1: -0.05" "p2: 0.0001"
+  cases=$((cases + 1))
+  run_images --camera "$out/lens.yaml" --out "$out/lens1" >/dev/null 2>&1 || fail "lens run failed"
+  grep -q "^  k1: -0.05$" "$out/lens1/config_used.yaml" || fail "config_used.yaml has no k1"
+  run_images --config "$out/lens1/config_used.yaml" --out "$out/lens2" >/dev/null 2>&1 ||
+    fail "the run from config_used.yaml failed"
+  cmp -s "$out/lens1/poses_kitti.txt" "$out/lens2/poses_kitti.txt" ||
+    fail "config_used.yaml of a distorted camera does not repeat its run"
   { cat "$seq/camera.yaml"; echo "  fx: 1"; } >"$out/cam_twice.yaml"
   expect_error 1 "cam_twice\.yaml:[0-9]+: key 'fx' appears twice in one mapping" \
     "$roadscale" run --images "$seq/image_0" --camera "$out/cam_twice.yaml" --no-segmentation \
