@@ -83,6 +83,20 @@ if [[ "$mode" == "errors" ]]; then
   expect_failure "--submit goes with --slurm" \
     "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --submit
   [[ ! -e "$work/out" ]] || fail "a refused batch created its output folder"
+  # A drive named after the batch's own files (issue 30).
+  for name in batch.json summary.md Summary.HTML; do
+    printf 'drives:\n  - name: %s\n    kitti: seq\n' "$name" >"$work/reserved.yaml"
+    expect_failure "reserved.yaml:2: drive '$name': '.*' is a file of the batch itself" \
+      "$roadscale" batch --manifest "$work/reserved.yaml" --out "$work/out"
+  done
+  # One drive that cannot start (its folder is a file) does not stop the next one (issue 30).
+  printf 'drives:\n  - name: a\n    kitti: seq\n  - name: b\n    kitti: seq\n' >"$work/two.yaml"
+  mkdir -p "$work/started" && touch "$work/started/a"
+  expect_failure "^roadscale: error: 2 of 2 drives failed: a \(.*started/a: cannot create the drive's folder.*\); b \(exit status 1: " \
+    "$roadscale" batch --manifest "$work/two.yaml" --out "$work/started"
+  expect_line "$scratch/stdout.txt" "a: FAILED before starting: .*started/a: cannot create"
+  [[ -s "$work/started/b/run.log" && -f "$work/started/summary.md" ]] ||
+    fail "the batch stopped at the drive that could not start"
   echo "batch errors: all checks passed"
   exit 0
 fi

@@ -112,6 +112,12 @@ class Progress {
   size_t done_ = 0;
 };
 
+void FailedBeforeStarting(const std::string& name, const std::string& why, Progress* progress,
+                          std::vector<std::string>* failures) {
+  progress->Line(name, "FAILED before starting: " + why);
+  failures->push_back(name + " (" + why + ")");
+}
+
 void RunBatch(const BatchArguments& arguments) {
   if (!arguments.summarize.empty()) {
     if (!arguments.manifest.empty() || !arguments.kitti_root.empty() || !arguments.out.empty()) {
@@ -179,30 +185,44 @@ void RunBatch(const BatchArguments& arguments) {
     batch::WriteDriveList(arguments.out, names);
   }
 
-  // Finished drives with an unchanged fingerprint are skipped; the others are run.
+  // Finished drives with an unchanged fingerprint are skipped; the others are run. A drive
+  // that cannot even start (its folder is a file, its config unreadable) is that drive's
+  // failure, listed at the end like the others': it does not stop the batch.
   Progress progress(selected.size());
   std::vector<DriveProcess> processes;
   std::vector<const batch::BatchDrive*> to_run;
   std::vector<std::string> fingerprints;
+  std::vector<std::string> failures;
   for (const size_t index : selected) {
     const batch::BatchDrive& drive = manifest.drives[index];
     const std::string dir = batch::DriveFolder(arguments.out, drive.name);
-    const std::string fingerprint = batch::DriveFingerprint(drive);
-    if (batch::IsDriveFinished(dir, fingerprint)) {
-      progress.Line(drive.name, "skipped (finished before with the same config)");
+    std::string fingerprint;
+    try {
+      fingerprint = batch::DriveFingerprint(drive);
+      if (batch::IsDriveFinished(dir, fingerprint)) {
+        progress.Line(drive.name, "skipped (finished before with the same config)");
+        continue;
+      }
+      std::error_code error;
+      fs::create_directories(dir, error);
+      if (error || !fs::is_directory(dir)) {
+        ThrowFileError(dir, "cannot create the drive's folder" +
+                                (error ? " (" + error.message() + ")" : std::string()));
+      }
+      batch::RemoveDriveRecord(dir);
+    } catch (const Error& error) {
+      FailedBeforeStarting(drive.name, error.what(), &progress, &failures);
+      continue;
+    } catch (const fs::filesystem_error& error) {
+      FailedBeforeStarting(drive.name, error.what(), &progress, &failures);
       continue;
     }
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error) ThrowFileError(dir, "cannot create the drive's folder (" + error.message() + ")");
-    batch::RemoveDriveRecord(dir);
     processes.push_back(
         {batch::RunArguments(drive, dir), (fs::path(dir) / batch::kDriveLogFile).string()});
     to_run.push_back(&drive);
     fingerprints.push_back(fingerprint);
   }
 
-  std::vector<std::string> failures;
   {
     InterruptScope interrupt_scope;
     RunDriveProcesses(

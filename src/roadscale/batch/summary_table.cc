@@ -119,15 +119,21 @@ BatchSummary SummarizeDrives(const std::string& dir, const std::vector<std::stri
   BatchSummary summary;
   for (const std::string& name : names) {
     const std::string drive_dir = DriveFolder(dir, name);
-    const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
-    if (!record) {
-      summary.unfinished.push_back({name, "not run"});
-    } else if (record->exit_status != 0) {
-      summary.unfinished.push_back(
-          {name, "failed (exit status " + std::to_string(record->exit_status) + ")" +
-                     (record->error.empty() ? std::string() : ": " + record->error)});
-    } else {
-      summary.rows.push_back(ReadDriveRow(drive_dir, name));
+    // A damaged record or output is that drive's problem, listed with it: the others are
+    // still summarised.
+    try {
+      const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
+      if (!record) {
+        summary.unfinished.push_back({name, "not run"});
+      } else if (record->exit_status != 0) {
+        summary.unfinished.push_back(
+            {name, "failed (exit status " + std::to_string(record->exit_status) + ")" +
+                       (record->error.empty() ? std::string() : ": " + record->error)});
+      } else {
+        summary.rows.push_back(ReadDriveRow(drive_dir, name));
+      }
+    } catch (const Error& error) {
+      summary.unfinished.push_back({name, std::string("damaged: ") + error.what()});
     }
   }
   DriveRow mean;
