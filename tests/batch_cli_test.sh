@@ -97,6 +97,18 @@ if [[ "$mode" == "errors" ]]; then
   expect_line "$scratch/stdout.txt" "a: FAILED before starting: .*started/a: cannot create"
   [[ -s "$work/started/b/run.log" && -f "$work/started/summary.md" ]] ||
     fail "the batch stopped at the drive that could not start"
+  # The same for a config the user cannot read (root reads every file: run as nobody).
+  if [[ $(id -u) -eq 0 ]] && setpriv --reuid=65534 --regid=65534 --clear-groups true 2>/dev/null; then
+    chmod 755 "$work" "$work/seq"
+    printf 'Scale:\n  filter_window: 5\n' >"$work/secret.yaml"
+    chmod 000 "$work/secret.yaml"
+    printf 'drives:\n  - name: a\n    kitti: seq\n    config: secret.yaml\n  - name: b\n    kitti: seq\n' \
+      >"$work/secret_m.yaml"
+    mkdir -m 777 "$work/secret_out"
+    expect_failure "2 of 2 drives failed: a \(.*secret\.yaml: cannot open .*permission denied\); b \(exit" \
+      setpriv --reuid=65534 --regid=65534 --clear-groups \
+      "$roadscale" batch --manifest "$work/secret_m.yaml" --out "$work/secret_out"
+  fi
   echo "batch errors: all checks passed"
   exit 0
 fi
