@@ -97,6 +97,12 @@ if [[ "$mode" == "errors" ]]; then
   expect_line "$scratch/stdout.txt" "a: FAILED before starting: .*started/a: cannot create"
   [[ -s "$work/started/b/run.log" && -f "$work/started/summary.md" ]] ||
     fail "the batch stopped at the drive that could not start"
+  # --summarize refuses a batch.json whose names no drive can have (they became paths).
+  mkdir -p "$work/forged"
+  printf '{"drives": ["../../../etc"]}\n' >"$work/forged/batch.json"
+  expect_failure "forged/batch.json: drive '\.\./\.\./\.\./etc': a drive's name must" \
+    "$roadscale" batch --summarize "$work/forged"
+  [[ ! -e "$work/forged/summary.md" ]] || fail "a forged batch.json was summarised"
   # The same for a config the user cannot read (root reads every file: run as nobody).
   if [[ $(id -u) -eq 0 ]] && setpriv --reuid=65534 --regid=65534 --clear-groups true 2>/dev/null; then
     chmod 755 "$work" "$work/seq"

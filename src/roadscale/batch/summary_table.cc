@@ -111,7 +111,9 @@ DriveRow ReadDriveRow(const std::string& drive_dir, const std::string& name) {
   row.ground_truth = fs::exists(metrics);
   if (row.ground_truth) ReadMetrics(metrics.string(), &row);
   const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
-  if (record && record->wall_s > 0.0) row.frames_per_s = *row.frames / record->wall_s;
+  // No process runs in less than a millisecond: a shorter wall time is a damaged record, and
+  // its frames/s would print with hundreds of digits.
+  if (record && record->wall_s >= 1e-3) row.frames_per_s = *row.frames / record->wall_s;
   return row;
 }
 

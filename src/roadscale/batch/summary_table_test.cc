@@ -127,6 +127,29 @@ TEST(SummaryTableTest, FailedAndMissingDrivesAreListedAndTheOthersKeepTheirRows)
   EXPECT_THAT(FormatSummaryHtml(summary), HasSubstr("<a href=\"good/report.html\">good</a>"));
 }
 
+// A record's wall time of 1e-300 s printed a frames/s of hundreds of digits (issue 30).
+TEST(SummaryTableTest, AWallTimeNoProcessTakesGivesNoFramesPerSecond) {
+  TempDir batch;
+  WriteDrive(batch, "a", "");
+  DriveRecord record = *ReadDriveRecord(batch.File("a"));
+  record.wall_s = 1e-300;
+  WriteDriveRecord(batch.File("a"), record);
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"a"});
+  ASSERT_EQ(summary.rows.size(), 1U);
+  EXPECT_FALSE(summary.rows[0].frames_per_s.has_value());
+  EXPECT_LT(FormatSummaryMarkdown(summary).size(), 1000U);
+}
+
+// Raw HTML, a link or a '|' in an error reason rendered in summary.md (issue 30).
+TEST(SummaryTableTest, MarkdownShowsErrorReasonsAsText) {
+  BatchSummary summary;
+  summary.unfinished.push_back({"a", "failed: <script>x()</script> [y](javascript:z) a|b & c"});
+  const std::string markdown = FormatSummaryMarkdown(summary);
+  EXPECT_THAT(markdown, HasSubstr("- a: failed: \\<script\\>x()\\</script\\> "
+                                  "\\[y\\](javascript:z) a\\|b \\& c\n"));
+  EXPECT_EQ(markdown.find("<script>"), std::string::npos);
+}
+
 // One damaged drive stopped the whole summary (issue 30, defect 7): it is listed as unfinished
 // with the damage, and the other drives keep their rows.
 TEST(SummaryTableTest, ADamagedDriveIsListedWithTheDamageAndTheOthersKeepTheirRows) {
