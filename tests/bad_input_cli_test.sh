@@ -189,6 +189,10 @@ if [[ "$mode" == "files" ]]; then
     expect_error 1 "calib_$fx/calib\.txt: invalid option camera\.fx: .* is no lens's focal length" \
       "$roadscale" run --kitti "$out/calib_$fx" --no-segmentation --out "$out/r"
   done
+  cp -r "$seq" "$out/calib_pp"
+  sed -i 's/^P0: \([^ ]*\) \([^ ]*\) [^ ]*/P0: \1 \2 1e5/' "$out/calib_pp/calib.txt"
+  expect_error 1 "calib_pp/calib\.txt: invalid option camera\.cx/cy: the principal point" \
+    "$roadscale" run --kitti "$out/calib_pp" --no-segmentation --out "$out/r"
   # config_used.yaml keeps the lens: repeating the run with it gives the same poses.
   camera lens.yaml "k1: -0.05" "p2: 0.0001"
   cases=$((cases + 1))
@@ -431,7 +435,7 @@ if [[ "$mode" == "concurrent" ]]; then
   # nothing; the lock of a holder killed with -9 is taken over.
   make_long
   pid="" drive_pid=""
-  trap 'kill -9 $pid $drive_pid 2>/dev/null; rm -rf "$out"' EXIT  # no stopped process left
+  trap 'kill -9 $pid $drive_pid 2>/dev/null || true; rm -rf "$out"' EXIT  # none left stopped
   wait_for() {  # FILE: until it exists and is not empty
     for _ in $(seq 1 400); do
       [[ -s "$1" ]] && return 0
@@ -464,7 +468,7 @@ if [[ "$mode" == "concurrent" ]]; then
   # into the folder of the drive the batch is running.
   printf 'drives:\n  - name: a\n    kitti: %s\n    no_segmentation: true\n    sequential: true\n    config: %s\n' \
     "$long" "$out/noroad.yaml" >"$out/long.yaml"
-  "$roadscale" batch --manifest "$out/long.yaml" --out "$out/batch" >/dev/null 2>&1 &
+  "$roadscale" batch --manifest "$out/long.yaml" --out "$out/batch" >"$out/batch.log" 2>&1 &
   pid=$!
   wait_for "$out/batch/a/.roadscale.lock"
   drive_pid="$(cut -d ' ' -f 1 "$out/batch/a/.roadscale.lock")"
@@ -477,8 +481,12 @@ if [[ "$mode" == "concurrent" ]]; then
     "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/batch/a"
   [[ ! -e "$out/batch/slurm" && ! -e "$out/batch/summary.md" ]] ||
     fail "a refused batch wrote into the folder in use"
-  kill -9 "$pid" "$drive_pid"
+  # SIGTERM to the batch: its drive is stopped, reported as interrupted (not FAILED).
+  kill -CONT "$drive_pid" "$pid"
+  kill -TERM "$pid"
   wait "$pid" 2>/dev/null || true
+  grep -q "a: interrupted after" "$out/batch.log" || fail "no interrupted line: $(cat "$out/batch.log")"
+  ! grep -q "FAILED" "$out/batch.log" || fail "an interrupted drive shown as FAILED"
   echo "bad inputs (concurrent): $cases cases passed"
   exit 0
 fi

@@ -72,6 +72,8 @@ if [[ "$mode" == "errors" ]]; then
   printf 'drives:\n  - name: a\n    kitti: seq\n' >"$work/good.yaml"
   expect_failure "--only-index 1: the batch has 1 drives" \
     "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --only-index 1
+  expect_failure "--only-index -1: the batch has 1 drives \(0\.\.0\)" \
+    "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --only-index -1
   expect_failure "give exactly one of --manifest FILE and --kitti-root ROOT" \
     "$roadscale" batch --out "$work/out"
   expect_failure "sequences/03: no such KITTI sequence folder" \

@@ -36,7 +36,7 @@ struct BatchArguments {
   std::string sequences;
   std::string out;
   int jobs = 1;
-  std::optional<size_t> only_index;
+  std::optional<long long> only_index;  // signed: CLI11 would wrap -1 round to 2^64 - 1
   std::string summarize;
   bool slurm = false;
   bool submit = false;
@@ -170,12 +170,13 @@ void RunBatch(const BatchArguments& arguments) {
 
   std::vector<size_t> selected;
   if (arguments.only_index) {
-    if (*arguments.only_index >= manifest.drives.size()) {
+    if (*arguments.only_index < 0 ||
+        static_cast<size_t>(*arguments.only_index) >= manifest.drives.size()) {
       throw Error("--only-index " + std::to_string(*arguments.only_index) + ": the batch has " +
                   std::to_string(manifest.drives.size()) + " drives (0.." +
                   std::to_string(manifest.drives.size() - 1) + ")");
     }
-    selected.push_back(*arguments.only_index);
+    selected.push_back(static_cast<size_t>(*arguments.only_index));
   } else {
     std::vector<std::string> names;
     for (size_t i = 0; i < manifest.drives.size(); ++i) {
@@ -246,6 +247,10 @@ void RunBatch(const BatchArguments& arguments) {
           std::snprintf(seconds, sizeof(seconds), "%.1f s", exit.wall_s);
           if (exit.status == 0) {
             progress.Line(record.name, std::string("done in ") + seconds);
+          } else if (InterruptScope::interrupted()) {
+            // Stopped by the batch's own Ctrl-C or SIGTERM: the same command runs it again.
+            progress.Line(record.name, "interrupted after " + std::string(seconds) + " (log " +
+                                           processes[i].log_path + ")");
           } else {
             const std::string why = "exit status " + std::to_string(exit.status) +
                                     (record.error.empty() ? std::string() : ": " + record.error);

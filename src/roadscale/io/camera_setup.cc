@@ -1,7 +1,6 @@
 #include "roadscale/io/camera_setup.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -38,10 +37,10 @@ double ReadDouble(const YAML::Node& block, const char* key, const std::string& p
   const YAML::Node node = RequireKey(block, key, path);
   const std::string& text = node.Scalar();
   char* end = nullptr;
-  errno = 0;
+  // strtod's ERANGE is not checked: an overflow is infinite (refused below), and an underflow
+  // (k1: 1e-320) is a number, as close to 0 as a double gets; the range checks judge it.
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
-      !std::isfinite(value)) {
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) {
     ThrowFileError(path, YamlLine(node.Mark()),
                    std::string("Camera.") + key + ": expected a number, found '" + text + "'");
   }

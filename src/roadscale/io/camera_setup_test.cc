@@ -214,6 +214,22 @@ TEST(CameraSetup, UnusableDistortionNamesTheFileAndTheCoefficient) {
   }
 }
 
+// "k1: 1e-320" was "expected a number" (issue 30): it is a number, a subnormal one.
+TEST(CameraSetup, ATinyCoefficientIsANumber) {
+  TempDir dir;
+  const std::string path = WriteTextFile(
+      dir.File("tiny.yaml"),
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n  k1: 1e-320\n");
+  EXPECT_EQ(ReadCameraYaml(path).distortion.at(0), 1e-320);
+  const std::string huge = WriteTextFile(
+      dir.File("huge.yaml"),
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n  k1: 1e400\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(huge); }),
+              HasSubstr("Camera.k1: expected a number, found '1e400'"));
+}
+
 // h0 1e-300 and fx 7.2e7 gave unscaled or identity trajectories (issue 30, defect 6).
 TEST(CameraSetup, HeightAndFocalLengthMustBePhysical) {
   TempDir dir;
