@@ -199,7 +199,7 @@ void RunBatch(const BatchArguments& arguments) {
     const std::string dir = batch::DriveFolder(arguments.out, drive.name);
     std::string fingerprint;
     try {
-      fingerprint = batch::DriveFingerprint(drive);
+      fingerprint = batch::DriveFingerprint(drive, ROADSCALE_VERSION);
       if (batch::IsDriveFinished(dir, fingerprint)) {
         progress.Line(drive.name, "skipped (finished before with the same config)");
         continue;
