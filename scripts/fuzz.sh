@@ -38,7 +38,7 @@ fi
 
 build="${FUZZ_BUILD_DIR:-build-fuzz}"
 targets=(kitti_calib kitti_times trajectory camera_yaml run_config model_yaml scene_yaml
-  png_structure batch_manifest)
+  png_structure batch_manifest batch_json slurm_options)
 if [[ -z "${FUZZ_BUILD_DIR:-}" ]]; then
   # -O1 with line tables only, as OSS-Fuzz builds: enough for the sanitizers' stack traces,
   # and the build (the whole library, instrumented) is the slow part of a short run.

@@ -3,11 +3,13 @@
 # every fault part way through a run, ends with the documented exit code, exactly one line on
 # stderr naming the file (and line) or option at fault, and the rows written before the fault
 # intact. Prints how many cases ran.
-# Usage: bad_input_cli_test.sh ROADSCALE_BINARY [files|runs]
+# Usage: bad_input_cli_test.sh ROADSCALE_BINARY [files|runs|concurrent]
 #   files: eval, YAML, calib/times/images/trajectories, output folder, command line (fast);
 #   runs:  faults part way through `run` and `rescale` on a rendered sequence: a re-run into a
 #          used folder failing at a corrupt frame, SIGTERM and SIGINT while frames wait for the
-#          first scale, SIGTERM and SIGINT during `rescale`.
+#          first scale, SIGTERM and SIGINT during `rescale`;
+#   concurrent: a second run, rescale or batch into an output folder in use refuses, naming
+#          the holder; the lock of a holder killed with -9 is taken over.
 # Permission cases run the command as `nobody` when the test runs as root (root reads every
 # file); they are skipped when neither works.
 set -euo pipefail
@@ -62,6 +64,23 @@ check_pose_rows() {
 
 "$roadscale" synth --frames 40 --out "$out/data" >/dev/null 2>&1 || fail "synth failed"
 seq="$out/data/sequences/00"
+
+# $long: 400 frames (the 40 rendered ones there and back, $out/long/trajectory.txt with them),
+# so that no machine finishes a run before its signal; noroad.yaml keeps every frame waiting
+# for a first scale.
+make_long() {
+  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
+  long="$out/long/sequences/00"
+  mkdir -p "$long/image_0"
+  cp "$seq/calib.txt" "$seq/camera.yaml" "$long/"
+  for i in $(seq 0 399); do
+    k=$((i % 78))
+    ((k < 40)) || k=$((78 - k))
+    ln -s "$seq/image_0/$(printf %06d $k).png" "$long/image_0/$(printf %06d "$i").png"
+    sed -n "$((k + 1))p" "$out/data/poses/00.txt" >>"$out/long/trajectory.txt"
+  done
+  awk 'BEGIN { for (i = 0; i < 400; i++) printf "%e\n", i * 0.1 }' >"$long/times.txt"
+}
 
 if [[ "$mode" == "files" ]]; then
   # --- eval: pose rows that are not rigid, unreadable files ---------------------------------
@@ -127,7 +146,7 @@ if [[ "$mode" == "files" ]]; then
   printf 'Camera:\n  h0: 1e308\n' >"$out/h0.yaml"
   expect_error 1 "h0\.yaml:2: Camera\.h0: invalid option camera\.h0: .* got 1e\+308" \
     run_kitti --config "$out/h0.yaml" --out "$out/r"
-  expect_error 1 "invalid option h0: the camera height above the road must be in \(0, 100\] metres, got 1e\+308" \
+  expect_error 1 "invalid option h0: the camera height above the road must be in \[0\.05, 100\] metres, got 1e\+308" \
     run_kitti --h0 1e308 --out "$out/h0run"
   [[ ! -e "$out/h0run/poses_kitti.txt" ]] || fail "poses written despite --h0 1e308"
   expect_error 1 "invalid option h0: .* got 0" run_kitti --h0 0 --out "$out/h0run"
@@ -137,6 +156,52 @@ if [[ "$mode" == "files" ]]; then
     "$roadscale" run --images "$seq/image_0" --config "$out/fx.yaml" --out "$out/r"
   expect_error 1 "a_dir: cannot open camera YAML file: is a directory" \
     "$roadscale" run --images "$seq/image_0" --camera "$out/a_dir" --no-segmentation --out "$out/r"
+  # Issue 30: a camera YAML's unknown key, a lens whose undistortion blanks or folds the frames,
+  # a height or focal length no camera has (each ran before, every frame `ok`).
+  camera() {  # NAME LINES...: the rendered camera.yaml with Camera: lines added
+    local name="$1"
+    shift
+    { cat "$seq/camera.yaml"; printf '  %s\n' "$@"; } >"$out/$name"
+  }
+  run_images() { "$roadscale" run --images "$seq/image_0" --no-segmentation "$@"; }
+  for key in K1 s1 k7; do
+    camera "$key.yaml" "$key: 0.01"
+    expect_error 1 "$key\.yaml:11: unknown key 'Camera\.$key'" \
+      run_images --camera "$out/$key.yaml" --out "$out/r"
+  done
+  camera blank.yaml "k1: 1e6"
+  expect_error 1 "blank\.yaml:4: Camera: invalid option camera\.k1: 1e\+06 leaves 100 % of" \
+    run_images --camera "$out/blank.yaml" --out "$out/r"
+  camera fold.yaml "k1: -1"
+  expect_error 1 "fold\.yaml:4: Camera: invalid option camera\.k1: -1 folds the undistortion map" \
+    run_images --camera "$out/fold.yaml" --out "$out/r"
+  camera pole.yaml "k4: -1.5"
+  expect_error 1 "pole\.yaml:4: Camera: invalid option camera\.k4: -1\.5 makes the rational" \
+    run_images --camera "$out/pole.yaml" --out "$out/r"
+  expect_error 1 "invalid option h0: the camera height above the road must be in \[0\.05, 100\] metres, got 1e-300" \
+    run_kitti --h0 1e-300 --out "$out/r"
+  sed 's/^  fx: .*/  fx: 7.2e7/' "$seq/camera.yaml" >"$out/long_fx.yaml"
+  expect_error 1 "long_fx\.yaml:4: Camera: invalid option camera\.fx: 7\.2e\+07 px over an image side of 1241 px is no lens's focal length" \
+    run_images --camera "$out/long_fx.yaml" --out "$out/r"
+  for fx in 1e308 1e-300; do
+    cp -r "$seq" "$out/calib_$fx"
+    sed -i "s/^P0: [^ ]*/P0: $fx/" "$out/calib_$fx/calib.txt"
+    expect_error 1 "calib_$fx/calib\.txt: invalid option camera\.fx: .* is no lens's focal length" \
+      "$roadscale" run --kitti "$out/calib_$fx" --no-segmentation --out "$out/r"
+  done
+  cp -r "$seq" "$out/calib_pp"
+  sed -i 's/^P0: \([^ ]*\) \([^ ]*\) [^ ]*/P0: \1 \2 1e5/' "$out/calib_pp/calib.txt"
+  expect_error 1 "calib_pp/calib\.txt: invalid option camera\.cx/cy: the principal point" \
+    "$roadscale" run --kitti "$out/calib_pp" --no-segmentation --out "$out/r"
+  # config_used.yaml keeps the lens: repeating the run with it gives the same poses.
+  camera lens.yaml "k1: -0.05" "p2: 0.0001"
+  cases=$((cases + 1))
+  run_images --camera "$out/lens.yaml" --out "$out/lens1" >/dev/null 2>&1 || fail "lens run failed"
+  grep -q "^  k1: -0.05$" "$out/lens1/config_used.yaml" || fail "config_used.yaml has no k1"
+  run_images --config "$out/lens1/config_used.yaml" --out "$out/lens2" >/dev/null 2>&1 ||
+    fail "the run from config_used.yaml failed"
+  cmp -s "$out/lens1/poses_kitti.txt" "$out/lens2/poses_kitti.txt" ||
+    fail "config_used.yaml of a distorted camera does not repeat its run"
   { cat "$seq/camera.yaml"; echo "  fx: 1"; } >"$out/cam_twice.yaml"
   expect_error 1 "cam_twice\.yaml:[0-9]+: key 'fx' appears twice in one mapping" \
     "$roadscale" run --images "$seq/image_0" --camera "$out/cam_twice.yaml" --no-segmentation \
@@ -229,7 +294,7 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
       --out "$out/denied.run"
     check_pose_rows "$out/denied.run" 5
     mkdir -m 555 "$out/read_only"
-    expect_error 1 "read_only/[a-z_]+\.(txt|yaml|csv): cannot" \
+    expect_error 1 "read_only/(\.roadscale\.lock|[a-z_]+\.(txt|yaml|csv)): cannot" \
       "${as_user[@]}" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
       --out "$out/read_only"
   fi
@@ -238,8 +303,10 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   if $can_deny; then
     mkdir -m 700 "$out/closed_folder"
     cp "$seq/image_0/000000.png" "$out/closed_folder/"
+    mkdir -m 777 "$out/closed.run"
     expect_error 1 "closed_folder: permission denied" "${as_user[@]}" "$roadscale" run \
-      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation --out "$out/r"
+      --images "$out/closed_folder" --camera "$seq/camera.yaml" --no-segmentation \
+      --out "$out/closed.run"
   fi
   mkdir "$out/no_images"
   expect_error 1 "no_images: no images" "$roadscale" run --images "$out/no_images" --camera "$seq/camera.yaml" \
@@ -309,19 +376,7 @@ if [[ "$mode" == "runs" ]]; then
   # SIGTERM and SIGINT part way: no road plane ever (the frames wait for the first scale), and
   # the signal must still write every frame read so far. The frame-to-frame host writes each
   # scaled frame at once, so the wait for the first row below works.
-  printf 'Scale:\n  ransac_min_points: 100000\nMapping:\n  mode: frame_to_frame\n' >"$out/noroad.yaml"
-  # 400 frames (the 40 rendered ones there and back, the trajectory with them), so that no
-  # machine finishes a run before its signal.
-  long="$out/long/sequences/00"
-  mkdir -p "$long/image_0"
-  cp "$seq/calib.txt" "$seq/camera.yaml" "$long/"
-  for i in $(seq 0 399); do
-    k=$((i % 78))
-    ((k < 40)) || k=$((78 - k))
-    ln -s "$seq/image_0/$(printf %06d $k).png" "$long/image_0/$(printf %06d "$i").png"
-    sed -n "$((k + 1))p" "$out/data/poses/00.txt" >>"$out/long/trajectory.txt"
-  done
-  awk 'BEGIN { for (i = 0; i < 400; i++) printf "%e\n", i * 0.1 }' >"$long/times.txt"
+  make_long
   for signal in TERM INT; do
     cases=$((cases + 1))
     run_dir="$out/signal_$signal"
@@ -372,6 +427,67 @@ if [[ "$mode" == "runs" ]]; then
     [[ "$(rows "$run_dir/rescale.csv")" -eq "$k" ]] || fail "rescale SIG$signal: rescale.csv rows"
   done
   echo "bad inputs (runs): $cases cases passed"
+  exit 0
+fi
+if [[ "$mode" == "concurrent" ]]; then
+  # Two processes into one output folder (issue 30: two batches lost rows of frames.csv and
+  # overwrote batch.json): the second refuses with one line naming the holder and touches
+  # nothing; the lock of a holder killed with -9 is taken over.
+  make_long
+  pid="" drive_pid=""
+  trap 'kill -9 $pid $drive_pid 2>/dev/null || true; rm -rf "$out"' EXIT  # none left stopped
+  wait_for() {  # FILE: until it exists and is not empty
+    for _ in $(seq 1 400); do
+      [[ -s "$1" ]] && return 0
+      sleep 0.05
+    done
+    fail "$1 never appeared"
+  }
+  "$roadscale" run --kitti "$long" --no-segmentation --config "$out/noroad.yaml" --sequential \
+    --out "$out/held" >/dev/null 2>&1 &
+  pid=$!
+  wait_for "$out/held/.roadscale.lock"
+  kill -STOP "$pid"  # holds the folder for as long as the checks take, on any machine
+  in_use="held: output folder in use by process $pid on $(hostname) \(roadscale run\); wait for it"
+  expect_error 1 "$in_use" "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle \
+    --out "$out/held"
+  expect_error 1 "$in_use" "$roadscale" rescale --trajectory "$out/long/trajectory.txt" \
+    --kitti "$long" --no-segmentation --out "$out/held"
+  printf 'drives:\n  - name: a\n    kitti: %s\n    no_segmentation: true\n' "$seq" >"$out/m.yaml"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/held"
+  [[ ! -e "$out/held/a" && ! -e "$out/held/batch.json" ]] ||
+    fail "a refused process changed the folder in use"
+  kill -9 "$pid"
+  wait "$pid" 2>/dev/null || true
+  [[ -s "$out/held/.roadscale.lock" ]] || fail "kill -9 left no stale lock to take over"
+  expect_ok "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/held"
+  check_pose_rows "$out/held" 40
+  [[ ! -e "$out/held/.roadscale.lock" ]] || fail "the lock outlived its run"
+
+  # Two batches into one folder, then --summarize and --slurm while the first runs; a `run`
+  # into the folder of the drive the batch is running.
+  printf 'drives:\n  - name: a\n    kitti: %s\n    no_segmentation: true\n    sequential: true\n    config: %s\n' \
+    "$long" "$out/noroad.yaml" >"$out/long.yaml"
+  "$roadscale" batch --manifest "$out/long.yaml" --out "$out/batch" >"$out/batch.log" 2>&1 &
+  pid=$!
+  wait_for "$out/batch/a/.roadscale.lock"
+  drive_pid="$(cut -d ' ' -f 1 "$out/batch/a/.roadscale.lock")"
+  kill -STOP "$pid" "$drive_pid"
+  in_use="batch: output folder in use by process $pid on $(hostname) \(roadscale batch\)"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/batch"
+  expect_error 1 "$in_use" "$roadscale" batch --summarize "$out/batch"
+  expect_error 1 "$in_use" "$roadscale" batch --manifest "$out/m.yaml" --out "$out/batch" --slurm
+  expect_error 1 "batch/a: output folder in use by process $drive_pid on .* \(roadscale run\)" \
+    "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/batch/a"
+  [[ ! -e "$out/batch/slurm" && ! -e "$out/batch/summary.md" ]] ||
+    fail "a refused batch wrote into the folder in use"
+  # SIGTERM to the batch: its drive is stopped, reported as interrupted (not FAILED).
+  kill -CONT "$drive_pid" "$pid"
+  kill -TERM "$pid"
+  wait "$pid" 2>/dev/null || true
+  grep -q "a: interrupted after" "$out/batch.log" || fail "no interrupted line: $(cat "$out/batch.log")"
+  ! grep -q "FAILED" "$out/batch.log" || fail "an interrupted drive shown as FAILED"
+  echo "bad inputs (concurrent): $cases cases passed"
   exit 0
 fi
 fail "unknown mode $mode"

@@ -72,6 +72,8 @@ if [[ "$mode" == "errors" ]]; then
   printf 'drives:\n  - name: a\n    kitti: seq\n' >"$work/good.yaml"
   expect_failure "--only-index 1: the batch has 1 drives" \
     "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --only-index 1
+  expect_failure "--only-index -1: the batch has 1 drives \(0\.\.0\)" \
+    "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --only-index -1
   expect_failure "give exactly one of --manifest FILE and --kitti-root ROOT" \
     "$roadscale" batch --out "$work/out"
   expect_failure "sequences/03: no such KITTI sequence folder" \
@@ -83,6 +85,38 @@ if [[ "$mode" == "errors" ]]; then
   expect_failure "--submit goes with --slurm" \
     "$roadscale" batch --manifest "$work/good.yaml" --out "$work/out" --submit
   [[ ! -e "$work/out" ]] || fail "a refused batch created its output folder"
+  # A drive named after the batch's own files (issue 30).
+  for name in batch.json summary.md Summary.HTML; do
+    printf 'drives:\n  - name: %s\n    kitti: seq\n' "$name" >"$work/reserved.yaml"
+    expect_failure "reserved.yaml:2: drive '$name': '.*' is a file of the batch itself" \
+      "$roadscale" batch --manifest "$work/reserved.yaml" --out "$work/out"
+  done
+  # One drive that cannot start (its folder is a file) does not stop the next one (issue 30).
+  printf 'drives:\n  - name: a\n    kitti: seq\n  - name: b\n    kitti: seq\n' >"$work/two.yaml"
+  mkdir -p "$work/started" && touch "$work/started/a"
+  expect_failure "^roadscale: error: 2 of 2 drives failed: a \(.*started/a: cannot create the drive's folder.*\); b \(exit status 1: " \
+    "$roadscale" batch --manifest "$work/two.yaml" --out "$work/started"
+  expect_line "$scratch/stdout.txt" "a: FAILED before starting: .*started/a: cannot create"
+  [[ -s "$work/started/b/run.log" && -f "$work/started/summary.md" ]] ||
+    fail "the batch stopped at the drive that could not start"
+  # --summarize refuses a batch.json whose names no drive can have (they became paths).
+  mkdir -p "$work/forged"
+  printf '{"drives": ["../../../etc"]}\n' >"$work/forged/batch.json"
+  expect_failure "forged/batch.json: drive '\.\./\.\./\.\./etc': a drive's name must" \
+    "$roadscale" batch --summarize "$work/forged"
+  [[ ! -e "$work/forged/summary.md" ]] || fail "a forged batch.json was summarised"
+  # The same for a config the user cannot read (root reads every file: run as nobody).
+  if [[ $(id -u) -eq 0 ]] && setpriv --reuid=65534 --regid=65534 --clear-groups true 2>/dev/null; then
+    chmod 755 "$work" "$work/seq"
+    printf 'Scale:\n  filter_window: 5\n' >"$work/secret.yaml"
+    chmod 000 "$work/secret.yaml"
+    printf 'drives:\n  - name: a\n    kitti: seq\n    config: secret.yaml\n  - name: b\n    kitti: seq\n' \
+      >"$work/secret_m.yaml"
+    mkdir -m 777 "$work/secret_out"
+    expect_failure "2 of 2 drives failed: a \(.*secret\.yaml: cannot open .*permission denied\); b \(exit" \
+      setpriv --reuid=65534 --regid=65534 --clear-groups \
+      "$roadscale" batch --manifest "$work/secret_m.yaml" --out "$work/secret_out"
+  fi
   echo "batch errors: all checks passed"
   exit 0
 fi
@@ -190,6 +224,23 @@ if [[ "$mode" == "slurm_script" ]]; then
   [[ -x "$work/out/slurm/submit.sh" ]] || fail "submit.sh is not executable"
   expect_line "$work/log.txt" "must be on a filesystem every node of the cluster sees"
   [[ ! -e "$work/out/a" ]] || fail "--slurm ran a drive"
+  # Values that would end their #SBATCH line and run the rest as a command in every task
+  # (issue 30): refused with one line, before any file is written.
+  cd "$work"
+  for option in "--sbatch-option=--account=lab"$'\n'"touch PWNED" \
+    "--partition=short"$'\n'"touch PWNED" "--time=1:00:00"$'\n'"touch PWNED" \
+    "--partition=a b" "--time=an hour" "--sbatch-option=--comment=\$(touch PWNED)"; do
+    name="${option%%=*}"
+    expect_failure "^roadscale: error: $name '" \
+      "$roadscale" batch --manifest "$work/m.yaml" --out "$work/refused" --slurm "$option"
+  done
+  expect_failure "^roadscale: error: --sbatch-option '--account=lab\\\\ntouch PWNED': expected" \
+    "$roadscale" batch --manifest "$work/m.yaml" --out "$work/refused" --slurm \
+    "--sbatch-option=--account=lab"$'\n'"touch PWNED"
+  expect_failure "^roadscale: error: --out '$work/100%a': Slurm scripts need" \
+    "$roadscale" batch --manifest "$work/m.yaml" --out "$work/100%a" --slurm
+  [[ ! -e "$work/refused" && ! -e "$work/100%a" ]] || fail "a refused --slurm wrote files"
+  [[ ! -e PWNED ]] || fail "an option ran as a command"
   echo "batch slurm script: all checks passed"
   exit 0
 fi

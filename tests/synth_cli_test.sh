@@ -56,4 +56,9 @@ expect_error "frames" --frames 0 --out "$out/e"
 expect_error "sequence name" --frames 2 --out "$out/e" --sequence x1
 printf 'Road:\n  lanes: 3\n' > "$out/bad.yaml"
 expect_error "bad.yaml:2" --scene "$out/bad.yaml" --frames 2 --out "$out/e"
+# A lens no camera.yaml can hold is refused before any file is made (issue 30).
+expect_error "camera.distortion: coefficients must be finite" --frames 2 --out "$out/lens" \
+  --distortion=nan,0,0,0,0
+expect_error "camera.k1: -1 folds" --frames 2 --out "$out/lens" --distortion=-1,0,0,0,0
+[[ ! -e "$out/lens" ]] || fail "a refused lens left a half-made dataset"
 echo "synth CLI: OK"

@@ -19,6 +19,7 @@
 #include "roadscale/batch/summary_files.h"
 #include "roadscale/batch/summary_table.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/folder_lock.h"
 
 #include "commands.h"
 #include "drive_processes.h"
@@ -35,7 +36,7 @@ struct BatchArguments {
   std::string sequences;
   std::string out;
   int jobs = 1;
-  std::optional<size_t> only_index;
+  std::optional<long long> only_index;  // signed: CLI11 would wrap -1 round to 2^64 - 1
   std::string summarize;
   bool slurm = false;
   bool submit = false;
@@ -62,16 +63,21 @@ std::vector<std::string> Summarize(const std::string& dir) {
   return batch::WriteSummaryFiles(dir, batch::SummarizeDrives(dir, batch::DriveNamesIn(dir)));
 }
 
-void WriteSlurm(const BatchArguments& arguments, const batch::BatchManifest& manifest) {
+batch::SlurmOptions SlurmOptionsOf(const BatchArguments& arguments, size_t drives) {
   batch::SlurmOptions options;
   options.roadscale = SelfPath();
   options.batch_input = BatchInputWords(arguments);
   options.out = Absolute(arguments.out);
-  options.drives = manifest.drives.size();
+  options.drives = drives;
   options.partition = arguments.partition;
   options.time = arguments.time;
   options.cpus_per_task = arguments.cpus_per_task;
   options.sbatch_options = arguments.sbatch_options;
+  return options;
+}
+
+void WriteSlurm(const BatchArguments& arguments, const batch::BatchManifest& manifest) {
+  const batch::SlurmOptions options = SlurmOptionsOf(arguments, manifest.drives.size());
   std::vector<std::string> names;
   for (const batch::BatchDrive& drive : manifest.drives) names.push_back(drive.name);
   batch::WriteDriveList(options.out, names);
@@ -106,11 +112,19 @@ class Progress {
   size_t done_ = 0;
 };
 
+void FailedBeforeStarting(const std::string& name, const std::string& why, Progress* progress,
+                          std::vector<std::string>* failures) {
+  progress->Line(name, "FAILED before starting: " + why);
+  failures->push_back(name + " (" + why + ")");
+}
+
 void RunBatch(const BatchArguments& arguments) {
   if (!arguments.summarize.empty()) {
     if (!arguments.manifest.empty() || !arguments.kitti_root.empty() || !arguments.out.empty()) {
       throw Error("--summarize DIR takes no --manifest, --kitti-root or --out");
     }
+    std::optional<FolderLock> lock;  // a missing folder is Summarize's error to report
+    if (fs::is_directory(arguments.summarize)) lock.emplace(arguments.summarize, "batch");
     for (const std::string& path : Summarize(arguments.summarize)) {
       std::cout << "Wrote:  " << path << '\n';
     }
@@ -127,6 +141,7 @@ void RunBatch(const BatchArguments& arguments) {
   }
   if (arguments.out.empty()) throw Error("--out DIR is required");
   if (arguments.submit && !arguments.slurm) throw Error("--submit goes with --slurm");
+  if (arguments.slurm) batch::CheckSlurmOptions(SlurmOptionsOf(arguments, 0));  // before any file
   CheckOption(arguments.jobs >= 1 && arguments.jobs <= 256, "--jobs", "must be 1..256");
   CheckOption(arguments.cpus_per_task >= 1, "--cpus-per-task", "must be at least 1");
 
@@ -134,6 +149,19 @@ void RunBatch(const BatchArguments& arguments) {
       arguments.manifest.empty()
           ? batch::KittiBatchManifest(arguments.kitti_root, arguments.sequences)
           : batch::ReadBatchManifest(arguments.manifest);
+  // The whole batch's files (batch.json, summary.*, slurm/) are written by one process at a
+  // time. The tasks of a Slurm array (--only-index) run side by side in the same folder by
+  // design: each drive's `roadscale run` locks that drive's folder instead.
+  std::optional<FolderLock> lock;
+  if (!arguments.only_index) {
+    std::error_code error;
+    fs::create_directories(arguments.out, error);
+    if (error || !fs::is_directory(arguments.out)) {
+      ThrowFileError(arguments.out, "cannot create the batch's output folder" +
+                                        (error ? " (" + error.message() + ")" : std::string()));
+    }
+    lock.emplace(arguments.out, "batch");
+  }
   if (arguments.slurm) {
     if (arguments.only_index) throw Error("--only-index is what the Slurm tasks run, not --slurm");
     WriteSlurm(arguments, manifest);
@@ -142,12 +170,13 @@ void RunBatch(const BatchArguments& arguments) {
 
   std::vector<size_t> selected;
   if (arguments.only_index) {
-    if (*arguments.only_index >= manifest.drives.size()) {
+    if (*arguments.only_index < 0 ||
+        static_cast<size_t>(*arguments.only_index) >= manifest.drives.size()) {
       throw Error("--only-index " + std::to_string(*arguments.only_index) + ": the batch has " +
                   std::to_string(manifest.drives.size()) + " drives (0.." +
                   std::to_string(manifest.drives.size() - 1) + ")");
     }
-    selected.push_back(*arguments.only_index);
+    selected.push_back(static_cast<size_t>(*arguments.only_index));
   } else {
     std::vector<std::string> names;
     for (size_t i = 0; i < manifest.drives.size(); ++i) {
@@ -157,30 +186,44 @@ void RunBatch(const BatchArguments& arguments) {
     batch::WriteDriveList(arguments.out, names);
   }
 
-  // Finished drives with an unchanged fingerprint are skipped; the others are run.
+  // Finished drives with an unchanged fingerprint are skipped; the others are run. A drive
+  // that cannot even start (its folder is a file, its config unreadable) is that drive's
+  // failure, listed at the end like the others': it does not stop the batch.
   Progress progress(selected.size());
   std::vector<DriveProcess> processes;
   std::vector<const batch::BatchDrive*> to_run;
   std::vector<std::string> fingerprints;
+  std::vector<std::string> failures;
   for (const size_t index : selected) {
     const batch::BatchDrive& drive = manifest.drives[index];
     const std::string dir = batch::DriveFolder(arguments.out, drive.name);
-    const std::string fingerprint = batch::DriveFingerprint(drive);
-    if (batch::IsDriveFinished(dir, fingerprint)) {
-      progress.Line(drive.name, "skipped (finished before with the same config)");
+    std::string fingerprint;
+    try {
+      fingerprint = batch::DriveFingerprint(drive, ROADSCALE_VERSION);
+      if (batch::IsDriveFinished(dir, fingerprint)) {
+        progress.Line(drive.name, "skipped (finished before with the same config)");
+        continue;
+      }
+      std::error_code error;
+      fs::create_directories(dir, error);
+      if (error || !fs::is_directory(dir)) {
+        ThrowFileError(dir, "cannot create the drive's folder" +
+                                (error ? " (" + error.message() + ")" : std::string()));
+      }
+      batch::RemoveDriveRecord(dir);
+    } catch (const Error& error) {
+      FailedBeforeStarting(drive.name, error.what(), &progress, &failures);
+      continue;
+    } catch (const fs::filesystem_error& error) {
+      FailedBeforeStarting(drive.name, error.what(), &progress, &failures);
       continue;
     }
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error) ThrowFileError(dir, "cannot create the drive's folder (" + error.message() + ")");
-    batch::RemoveDriveRecord(dir);
     processes.push_back(
         {batch::RunArguments(drive, dir), (fs::path(dir) / batch::kDriveLogFile).string()});
     to_run.push_back(&drive);
     fingerprints.push_back(fingerprint);
   }
 
-  std::vector<std::string> failures;
   {
     InterruptScope interrupt_scope;
     RunDriveProcesses(
@@ -204,6 +247,10 @@ void RunBatch(const BatchArguments& arguments) {
           std::snprintf(seconds, sizeof(seconds), "%.1f s", exit.wall_s);
           if (exit.status == 0) {
             progress.Line(record.name, std::string("done in ") + seconds);
+          } else if (InterruptScope::interrupted()) {
+            // Stopped by the batch's own Ctrl-C or SIGTERM: the same command runs it again.
+            progress.Line(record.name, "interrupted after " + std::string(seconds) + " (log " +
+                                           processes[i].log_path + ")");
           } else {
             const std::string why = "exit status " + std::to_string(exit.status) +
                                     (record.error.empty() ? std::string() : ": " + record.error);

@@ -7,7 +7,7 @@
 
 namespace roadscale::cli {
 
-void PrepareOutputFolder(const std::string& out) {
+FolderLock PrepareOutputFolder(const std::string& out, const std::string& command) {
   namespace fs = std::filesystem;
   std::error_code error;
   fs::create_directories(out, error);
@@ -15,6 +15,7 @@ void PrepareOutputFolder(const std::string& out) {
     ThrowFileError(out, "cannot create the output folder" +
                             (error ? " (" + error.message() + ")" : std::string()));
   }
+  FolderLock lock(out, command);
   for (const char* name : {"poses_kitti.txt", "poses_tum.txt", "frames.csv", "config_used.yaml",
                            "report.html", "metrics.json", "gt_poses_kitti.txt", "rescale.csv"}) {
     const fs::path path = fs::path(out) / name;
@@ -24,6 +25,7 @@ void PrepareOutputFolder(const std::string& out) {
                      "cannot remove the previous run's file (" + error.message() + ")");
     }
   }
+  return lock;
 }
 
 }  // namespace roadscale::cli

@@ -178,7 +178,7 @@ void RunRescale(const RescaleArguments& arguments) {
   }
 
   const fs::path out(arguments.out);
-  PrepareOutputFolder(arguments.out);
+  const FolderLock lock = PrepareOutputFolder(arguments.out, "rescale");
   std::ofstream kitti_file = OpenOutput((out / "poses_kitti.txt").string());
   std::ofstream tum_file = OpenOutput((out / "poses_tum.txt").string());
   std::ofstream csv_file = OpenOutput((out / "rescale.csv").string());

@@ -100,7 +100,7 @@ void RunRun(const RunArguments& arguments) {
   }
   config.pipeline.Check();
 
-  PrepareOutputFolder(arguments.out);
+  const FolderLock lock = PrepareOutputFolder(arguments.out, "run");
   FrameSourceOptions source_options;
   source_options.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
                         : !arguments.images.empty() ? FrameSourceType::kImageFolder
@@ -122,6 +122,7 @@ void RunRun(const RunArguments& arguments) {
     setup.camera.width = *config.camera.width;
     setup.camera.height = *config.camera.height;
     setup.h0 = config.camera.h0.value_or(1.65);
+    setup.distortion = config.camera.Distortion();
     source_options.camera_yaml = (std::filesystem::path(arguments.out) / "camera.yaml").string();
     WriteCameraYaml(source_options.camera_yaml, setup);
   }
@@ -140,6 +141,7 @@ void RunRun(const RunArguments& arguments) {
   config.camera.width = camera.camera.width;
   config.camera.height = camera.camera.height;
   config.camera.h0 = camera.h0;
+  config.camera.SetDistortion(camera.distortion);
 
   const std::unique_ptr<Segmenter> segmenter = MakeRunSegmenter(&config);
   // More copies for the other segmentation threads: a network's inference is the slowest

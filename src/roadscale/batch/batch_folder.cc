@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "roadscale/batch/drive_record.h"
+#include "roadscale/batch/manifest.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -16,6 +17,15 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string ListPath(const std::string& dir) { return (fs::path(dir) / "batch.json").string(); }
+
+bool IsDriveName(const std::string& name) {
+  try {
+    CheckDriveName(name, name);
+  } catch (const Error&) {
+    return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -32,26 +42,36 @@ void WriteDriveList(const std::string& dir, const std::vector<std::string>& name
   }
   nlohmann::ordered_json json;
   json["drives"] = names;
-  std::ofstream file(ListPath(dir));
-  file << json.dump(2) << '\n';
-  if (!file.flush()) ThrowFileError(ListPath(dir), "cannot write the batch's list of drives");
+  WriteFileAtomically(ListPath(dir), json.dump(2) + '\n');
 }
 
 std::vector<std::string> DriveNamesIn(const std::string& dir) {
   if (!fs::is_directory(dir)) ThrowFileError(dir, "not a batch output folder (no such folder)");
   if (fs::exists(ListPath(dir))) {
+    std::vector<std::string> names;
     try {
-      return nlohmann::json::parse(ReadInputFile(ListPath(dir), "batch list"))
-          .at("drives")
-          .get<std::vector<std::string>>();
+      names = nlohmann::json::parse(ReadInputFile(ListPath(dir), "batch list"))
+                  .at("drives")
+                  .get<std::vector<std::string>>();
     } catch (const nlohmann::json::exception& e) {
       ThrowFileError(ListPath(dir), std::string("not a list of drives (") + e.what() + ")");
     }
+    // The names become paths and text of the summary: a name a manifest could not hold
+    // ("../../../etc", HTML) means the file was not written by a batch.
+    for (const std::string& name : names) {
+      try {
+        CheckDriveName(name, "drive '" + name + "'");
+      } catch (const Error& e) {
+        ThrowFileError(ListPath(dir), e.what());
+      }
+    }
+    return names;
   }
   std::vector<std::string> names;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
-    if (entry.is_directory() && fs::exists(entry.path() / kDriveRecordFile)) {
-      names.push_back(entry.path().filename().string());
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && fs::exists(entry.path() / kDriveRecordFile) && IsDriveName(name)) {
+      names.push_back(name);
     }
   }
   std::sort(names.begin(), names.end());

@@ -15,7 +15,8 @@ std::string DriveFolder(const std::string& dir, const std::string& name);
 void WriteDriveList(const std::string& dir, const std::vector<std::string>& names);
 
 // The drives of the batch in DIR: DIR/batch.json's list, else every subfolder holding a
-// drive record, sorted by name. Throws Error when DIR is not a folder or batch.json is broken.
+// drive record whose name a drive can have (CheckDriveName), sorted by name. Throws Error when
+// DIR is not a folder or batch.json is broken or holds a name no drive can have.
 std::vector<std::string> DriveNamesIn(const std::string& dir);
 
 }  // namespace roadscale::batch

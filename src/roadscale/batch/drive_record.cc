@@ -1,10 +1,14 @@
 #include "roadscale/batch/drive_record.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
@@ -18,6 +22,20 @@ std::string RecordPath(const std::string& drive_dir) {
   return (fs::path(drive_dir) / kDriveRecordFile).string();
 }
 
+// The outputs every finished run writes (metrics.json and gt_poses_kitti.txt need ground truth).
+constexpr const char* kOutputsOfEveryRun[] = {"poses_kitti.txt", "poses_tum.txt", "frames.csv",
+                                              "config_used.yaml", "report.html"};
+
+// The number of rows of the file, each ended by '\n'; nothing when it cannot be read or its
+// last row is cut.
+std::optional<size_t> WholeRows(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return std::nullopt;
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (!text.empty() && text.back() != '\n') return std::nullopt;
+  return static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
 }  // namespace
 
 void WriteDriveRecord(const std::string& drive_dir, const DriveRecord& record) {
@@ -29,16 +47,7 @@ void WriteDriveRecord(const std::string& drive_dir, const DriveRecord& record) {
   json["error"] = record.error;
   json["wall_s"] = record.wall_s;
   json["outputs"] = record.outputs;
-  const std::string path = RecordPath(drive_dir);
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary);
-    file << json.dump(2) << '\n';
-    if (!file.flush()) ThrowFileError(temporary, "cannot write the drive's record");
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) ThrowFileError(path, "cannot write the drive's record (" + error.message() + ")");
+  WriteFileAtomically(RecordPath(drive_dir), json.dump(2) + '\n');
 }
 
 std::optional<DriveRecord> ReadDriveRecord(const std::string& drive_dir) {
@@ -80,12 +89,31 @@ std::vector<std::string> RunOutputsIn(const std::string& drive_dir) {
 }
 
 bool IsDriveFinished(const std::string& drive_dir, const std::string& fingerprint) {
-  const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
+  std::optional<DriveRecord> record;
+  try {
+    record = ReadDriveRecord(drive_dir);
+  } catch (const Error&) {
+    return false;  // a record nobody can read proves nothing: the drive runs again
+  }
   if (!record || record->exit_status != 0 || record->fingerprint != fingerprint) return false;
+  const auto listed = [&record](const std::string& name) {
+    return std::find(record->outputs.begin(), record->outputs.end(), name) != record->outputs.end();
+  };
+  // A record cut down to fewer outputs must not make an unfinished drive look finished.
+  for (const char* name : kOutputsOfEveryRun) {
+    if (!listed(name)) return false;
+  }
   for (const std::string& output : record->outputs) {
     if (!fs::is_regular_file(fs::path(drive_dir) / output)) return false;
   }
-  return !record->outputs.empty();
+  // One row per frame in each, whole rows only: a truncated file is no finished run.
+  const fs::path dir(drive_dir);
+  const std::optional<size_t> poses = WholeRows(dir / "poses_kitti.txt");
+  if (!poses || *poses == 0 || WholeRows(dir / "poses_tum.txt") != poses ||
+      WholeRows(dir / "frames.csv") != *poses + 1) {
+    return false;
+  }
+  return !listed("gt_poses_kitti.txt") || WholeRows(dir / "gt_poses_kitti.txt") == poses;
 }
 
 std::string LastErrorLine(const std::string& log_path) {

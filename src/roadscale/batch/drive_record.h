@@ -41,7 +41,10 @@ void RemoveDriveRecord(const std::string& drive_dir);
 std::vector<std::string> RunOutputsIn(const std::string& drive_dir);
 
 // True when the drive in `drive_dir` needs no run: its record says it finished (status 0)
-// with `fingerprint`, and every output the record lists is still there.
+// with `fingerprint`, it lists every output each run writes (poses_kitti.txt, poses_tum.txt,
+// frames.csv, config_used.yaml, report.html), every output it lists is still there, and they
+// agree: as many whole rows in poses_kitti.txt as in poses_tum.txt (and gt_poses_kitti.txt),
+// one more in frames.csv (its header). A record that cannot be read means "run again".
 bool IsDriveFinished(const std::string& drive_dir, const std::string& fingerprint);
 
 // The text of the last "roadscale: error: ..." (or "roadscale: internal error: ...") line of

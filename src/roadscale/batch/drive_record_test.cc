@@ -19,7 +19,12 @@ using ::testing::ElementsAre;
 class FinishedDriveTest : public ::testing::Test {
  protected:
   FinishedDriveTest() {
-    for (const char* name : {"poses_kitti.txt", "frames.csv", "report.html", "metrics.json"}) {
+    // Three frames: as many pose rows in each file, frames.csv with its header.
+    for (const char* name : {"poses_kitti.txt", "poses_tum.txt", "gt_poses_kitti.txt"}) {
+      WriteTextFile(dir_.File(name), "p\np\np\n");
+    }
+    WriteTextFile(dir_.File("frames.csv"), "frame\n0\n1\n2\n");
+    for (const char* name : {"config_used.yaml", "report.html", "metrics.json"}) {
       WriteTextFile(dir_.File(name), "x\n");
     }
     record_.name = "a";
@@ -44,7 +49,8 @@ TEST_F(FinishedDriveTest, RecordReadsBackAsWritten) {
   EXPECT_EQ(read->arguments, record_.arguments);
   EXPECT_EQ(read->wall_s, 12.5);
   EXPECT_THAT(read->outputs,
-              ElementsAre("poses_kitti.txt", "frames.csv", "report.html", "metrics.json"));
+              ElementsAre("poses_kitti.txt", "poses_tum.txt", "frames.csv", "config_used.yaml",
+                          "report.html", "metrics.json", "gt_poses_kitti.txt"));
 }
 
 TEST_F(FinishedDriveTest, SameFingerprintWithAllOutputsIsFinished) {
@@ -72,9 +78,31 @@ TEST_F(FinishedDriveTest, ARemovedRecordIsRunAgain) {
   EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
 }
 
-TEST_F(FinishedDriveTest, ABrokenRecordIsAnErrorNamingIt) {
+TEST_F(FinishedDriveTest, ABrokenRecordIsAnErrorNamingItAndRunsAgain) {
   WriteTextFile(dir_.File(kDriveRecordFile), "{\"name\": \"a\"\n");
   EXPECT_THROW(ReadDriveRecord(dir()), Error);
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));  // it stopped the whole batch (issue 30)
+}
+
+// Resuming trusted the record and the files' presence, not their content (issue 30).
+TEST_F(FinishedDriveTest, ARecordCutDownToFewerOutputsIsRunAgain) {
+  record_.outputs = {"report.html"};
+  WriteDriveRecord(dir(), record_);
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
+}
+
+TEST_F(FinishedDriveTest, TruncatedOrDisagreeingOutputsAreRunAgain) {
+  WriteTextFile(dir_.File("poses_kitti.txt"), "p\np\n");  // a row short
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
+  WriteTextFile(dir_.File("poses_kitti.txt"), "p\np\np");  // the last row cut
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
+  WriteTextFile(dir_.File("poses_kitti.txt"), "p\np\np\n");
+  EXPECT_TRUE(IsDriveFinished(dir(), "f1"));
+  WriteTextFile(dir_.File("frames.csv"), "frame\n0\n1\n");
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
+  WriteTextFile(dir_.File("frames.csv"), "frame\n0\n1\n2\n");
+  WriteTextFile(dir_.File("gt_poses_kitti.txt"), "p\n");
+  EXPECT_FALSE(IsDriveFinished(dir(), "f1"));
 }
 
 TEST(LastErrorLineTest, TakesTheLastErrorOfTheLog) {

@@ -69,8 +69,9 @@ std::vector<std::string> RunArguments(const RunRequest& run, const std::string& 
   return arguments;
 }
 
-std::string DriveFingerprint(const BatchDrive& drive) {
+std::string DriveFingerprint(const BatchDrive& drive, const std::string& roadscale_version) {
   Fnv1a hash;
+  hash.Add(roadscale_version);
   for (const std::string& argument : RunArguments(drive, "")) hash.Add(argument);
   for (const std::string* path : {&drive.config, &drive.camera, &drive.model}) {
     hash.Add(path->empty() ? std::string() : ReadInputFile(*path, "file of drive " + drive.name));

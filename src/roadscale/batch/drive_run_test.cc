@@ -54,20 +54,23 @@ TEST(DriveFingerprintTest, ChangesWithArgumentsAndConfigContentsButNotTheOutputF
   drive.name = "a";
   drive.kitti = "/data/seq";
   drive.config = WriteTextFile(dir.File("run.yaml"), "Scale:\n  filter_window: 5\n");
-  const std::string first = DriveFingerprint(drive);
+  const std::string first = DriveFingerprint(drive, "1.0.0");
   EXPECT_EQ(first.size(), 16U);
-  EXPECT_EQ(DriveFingerprint(drive), first);
+  EXPECT_EQ(DriveFingerprint(drive, "1.0.0"), first);
 
   BatchDrive other_frames = drive;
   other_frames.frames = "0:10";
-  EXPECT_NE(DriveFingerprint(other_frames), first);
+  EXPECT_NE(DriveFingerprint(other_frames, "1.0.0"), first);
 
   BatchDrive renamed = drive;  // the name is the output folder, not part of the run
   renamed.name = "b";
-  EXPECT_EQ(DriveFingerprint(renamed), first);
+  EXPECT_EQ(DriveFingerprint(renamed, "1.0.0"), first);
+
+  // Another roadscale may give other outputs: a resume with it reruns (issue 30).
+  EXPECT_NE(DriveFingerprint(drive, "1.0.1"), first);
 
   WriteTextFile(drive.config, "Scale:\n  filter_window: 7\n");
-  EXPECT_NE(DriveFingerprint(drive), first);
+  EXPECT_NE(DriveFingerprint(drive, "1.0.0"), first);
 }
 
 }  // namespace

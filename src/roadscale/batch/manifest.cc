@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <set>
 
 #include "roadscale/frontend/feature_detector.h"
+#include "roadscale/geometry/camera_height.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/yaml_file.h"
@@ -129,9 +131,12 @@ class DriveReader {
 
   double H0(const YAML::Node& value) const {
     double h0 = 0.0;
-    if (!value.IsScalar() || !YAML::convert<double>::decode(value, h0) || !(h0 > 0.0) ||
-        h0 > 100.0) {
-      Fail(value, "h0: expected a camera height in metres in (0, 100]");
+    if (!value.IsScalar() || !YAML::convert<double>::decode(value, h0) ||
+        !(h0 >= kMinCameraHeightM) || h0 > kMaxCameraHeightM) {
+      char text[80];
+      std::snprintf(text, sizeof(text), "h0: expected a camera height in metres in [%g, %g]",
+                    kMinCameraHeightM, kMaxCameraHeightM);
+      Fail(value, text);
     }
     return h0;
   }
@@ -163,7 +168,19 @@ void CheckDriveName(const std::string& name, const std::string& what) {
                 ": a drive's name must be a folder name of letters, digits, '.', '_' and "
                 "'-' (not starting with '.', at most 100 characters)");
   }
-  if (name == "slurm") throw Error(what + ": 'slurm' is the folder of the Slurm scripts");
+  // The batch's own files beside the drives' folders; compared without case, as a
+  // case-insensitive file system (macOS, Windows shares) would.
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "slurm") throw Error(what + ": 'slurm' is the folder of the Slurm scripts");
+  for (const char* reserved :
+       {"batch.json", "summary.md", "summary.csv", "summary.json", "summary.html"}) {
+    if (lower == reserved) {
+      throw Error(what + ": '" + reserved +
+                  "' is a file of the batch itself (its list of "
+                  "drives or its summary)");
+    }
+  }
 }
 
 BatchManifest ReadBatchManifest(const std::string& path) {

@@ -45,8 +45,9 @@ BatchManifest KittiBatchManifest(const std::string& root, const std::string& seq
 std::vector<std::string> ParseSequenceList(const std::string& text);
 
 // Throws Error(what + ": ...") unless `name` can be a drive's folder: letters, digits, '.',
-// '_' and '-', not starting with '.', at most 100 characters, and not "slurm" (the folder of
-// the Slurm scripts).
+// '_' and '-', not starting with '.', at most 100 characters, and none of the batch's own
+// names (in any case): "slurm" (the folder of the Slurm scripts), "batch.json" and
+// "summary.{md,csv,json,html}".
 void CheckDriveName(const std::string& name, const std::string& what);
 
 }  // namespace roadscale::batch

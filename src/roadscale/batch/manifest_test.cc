@@ -103,6 +103,15 @@ TEST_F(ManifestTest, DriveNeedsANameAndExactlyOneInput) {
               HasSubstr("m.yaml:2: drive 'a/b': a drive's name must be a folder name"));
   EXPECT_THAT(ErrorOf("drives:\n  - name: slurm\n    kitti: seq\n"),
               HasSubstr("'slurm' is the folder of the Slurm scripts"));
+  // A drive named after the batch's own files wrote its outputs over them (issue 30, defect 9).
+  for (const std::string name :
+       {"batch.json", "summary.md", "summary.csv", "summary.json", "summary.html", "Summary.MD"}) {
+    EXPECT_THAT(ErrorOf("drives:\n  - name: " + name + "\n    kitti: seq\n"),
+                HasSubstr("m.yaml:2: drive '" + name + "': '"))
+        << name;
+  }
+  EXPECT_THAT(ErrorOf("drives:\n  - name: SLURM\n    kitti: seq\n"),
+              HasSubstr("'slurm' is the folder of the Slurm scripts"));
 }
 
 TEST_F(ManifestTest, ValuesRunWouldRefuseAreErrorsHere) {

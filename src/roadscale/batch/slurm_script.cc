@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <regex>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::batch {
@@ -13,6 +15,37 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string SlurmFolder(const std::string& out) { return (fs::path(out) / "slurm").string(); }
+
+// `text` on one line for an error message: control characters as C escapes ("\n", "\x1b").
+std::string Shown(const std::string& text) {
+  std::string shown;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      shown += "\\n";
+    } else if (c == '\t') {
+      shown += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02x", byte);
+      shown += hex;
+    } else {
+      shown += c;
+    }
+  }
+  return shown;
+}
+
+bool OnlyCharacters(const std::string& text, const std::string& punctuation) {
+  return std::all_of(text.begin(), text.end(), [&](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           punctuation.find(c) != std::string::npos;
+  });
+}
+
+[[noreturn]] void Refuse(const char* option, const std::string& value, const std::string& why) {
+  throw Error(std::string(option) + " '" + Shown(value) + "': " + why);
+}
 
 // The #SBATCH lines both jobs share.
 std::string CommonOptions(const SlurmOptions& options) {
@@ -35,11 +68,38 @@ std::string ShellQuote(const std::string& text) {
   return quoted + "'";
 }
 
-SlurmScripts MakeSlurmScripts(const SlurmOptions& options) {
-  // #SBATCH lines are not parsed by a shell: a path there cannot be quoted.
-  if (options.out.find_first_of(" \t\n") != std::string::npos) {
-    throw Error("--out '" + options.out + "': Slurm scripts need a batch folder without spaces");
+void CheckSlurmOptions(const SlurmOptions& options) {
+  const bool out_plain = std::none_of(options.out.begin(), options.out.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte <= 0x20 || byte == 0x7f || c == '%' || c == '\\';
+  });
+  if (!out_plain) {
+    Refuse("--out", options.out,
+           "Slurm scripts need a batch folder without spaces, control characters, '%' or '\\' "
+           "(it goes unquoted into #SBATCH --output=, where sbatch expands '%')");
   }
+  if (!options.partition.empty() && !OnlyCharacters(options.partition, "_.,-")) {
+    Refuse("--partition", options.partition,
+           "expected partition names of letters, digits and _.- (several separated by commas)");
+  }
+  // sbatch's formats: M, M:S, H:M:S, D-H, D-H:M, D-H:M:S, or no limit.
+  static const std::regex time_format(R"(([0-9]+-)?[0-9]+(:[0-9]+){0,2}|(?:unlimited|infinite))",
+                                      std::regex::icase);
+  if (!options.time.empty() && !std::regex_match(options.time, time_format)) {
+    Refuse("--time", options.time,
+           "expected sbatch's time format: minutes, M:S, H:M:S, D-H, D-H:M, D-H:M:S or UNLIMITED");
+  }
+  for (const std::string& option : options.sbatch_options) {
+    if (option.size() < 2 || option[0] != '-' || !OnlyCharacters(option, "_./:=@+,-")) {
+      Refuse("--sbatch-option", option,
+             "expected one sbatch option such as --account=lab: a word starting with '-' of "
+             "letters, digits and _./:=@+,-");
+    }
+  }
+}
+
+SlurmScripts MakeSlurmScripts(const SlurmOptions& options) {
+  CheckSlurmOptions(options);
   if (options.drives == 0) throw Error("a batch without drives has no Slurm job array");
   const std::string slurm = SlurmFolder(options.out);
   std::string input;
@@ -99,10 +159,7 @@ std::string WriteSlurmScripts(const SlurmOptions& options) {
   for (const auto& [name, text] :
        {std::pair{"drives.sbatch", &scripts.drives}, std::pair{"summary.sbatch", &scripts.summary},
         std::pair{"submit.sh", &scripts.submit}}) {
-    const std::string path = slurm + "/" + name;
-    std::ofstream file(path);
-    file << *text;
-    if (!file.flush()) ThrowFileError(path, "cannot write the Slurm script");
+    WriteFileAtomically(slurm + "/" + name, *text);
   }
   const std::string submit = slurm + "/submit.sh";
   fs::permissions(submit, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,

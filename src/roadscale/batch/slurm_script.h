@@ -18,6 +18,15 @@ struct SlurmOptions {
   std::vector<std::string> sbatch_options;  // more "#SBATCH" options, e.g. "--account=lab"
 };
 
+// Throws Error naming the option unless every value is safe on an #SBATCH line. sbatch reads
+// those lines itself, without a shell, so nothing there can be quoted: a line end would close
+// the directive and run the rest as a command in every task. Each option therefore gets a strict
+// character set: --partition letters, digits and _.,-; --time sbatch's time formats only; each
+// --sbatch-option one word "-..." of letters, digits and _./:=@+,-; --out no white space,
+// control character, '%' or '\' (sbatch expands '%' in --output=, and a '\' turns the %a of
+// the task logs off).
+void CheckSlurmOptions(const SlurmOptions& options);
+
 // The scripts written into DIR/slurm/:
 struct SlurmScripts {
   // drives.sbatch: a job array with one task per drive, each running `roadscale batch
@@ -29,6 +38,7 @@ struct SlurmScripts {
   // ended (afterany: failed drives too, the summary lists them), and prints both job ids.
   std::string submit;
 };
+// Throws Error as CheckSlurmOptions does.
 SlurmScripts MakeSlurmScripts(const SlurmOptions& options);
 
 // Writes DIR/slurm/{drives.sbatch,summary.sbatch,submit.sh} (submit.sh executable); returns

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale::batch {
@@ -51,6 +51,23 @@ std::string HtmlEscape(const std::string& text) {
   return escaped;
 }
 
+// Text of a Markdown document as it reads: error reasons come from files anyone can edit, and
+// raw HTML, a link or a table's '|' in them would render (issue 30). Only those characters are
+// escaped, so that the file stays readable as text.
+std::string MarkdownEscape(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) {
+      escaped += ' ';
+    } else if (std::string("\\`[]<>&|").find(c) != std::string::npos) {
+      escaped += std::string("\\") + c;
+    } else {
+      escaped += c;
+    }
+  }
+  return escaped;
+}
+
 std::string MeanNote(const BatchSummary& summary) {
   return summary.mean
              ? "mean over the " + std::to_string(summary.mean_over) + " drive(s) with ground truth"
@@ -70,9 +87,7 @@ Json RowJson(const DriveRow& row) {
 }
 
 void WriteText(const std::string& path, const std::string& text) {
-  std::ofstream file(path);
-  file << text;
-  if (!file.flush()) ThrowFileError(path, "cannot write the batch summary");
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace
@@ -93,6 +108,7 @@ std::string FormatSummaryMarkdown(const BatchSummary& summary) {
     text += "\n";
   };
   for (const DriveRow& row : summary.rows) {
+    // Drive names are folder names of letters, digits and ._- (CheckDriveName): no escape.
     add_row(row, "[" + row.name + "](" + row.report + ")");
   }
   if (summary.mean) add_row(*summary.mean, "**mean**");
@@ -100,7 +116,7 @@ std::string FormatSummaryMarkdown(const BatchSummary& summary) {
           ". t_err and r_err: the KITTI devkit's metric over 100-800 m segments; scaled, held, "
           "unscaled: shares of frames; frames/s: frames over the drive's wall time.\n";
   for (const UnfinishedDrive& drive : summary.unfinished) {
-    text += "\n- " + drive.name + ": " + drive.reason;
+    text += "\n- " + drive.name + ": " + MarkdownEscape(drive.reason);
   }
   if (!summary.unfinished.empty()) text += "\n";
   return text;

@@ -111,7 +111,9 @@ DriveRow ReadDriveRow(const std::string& drive_dir, const std::string& name) {
   row.ground_truth = fs::exists(metrics);
   if (row.ground_truth) ReadMetrics(metrics.string(), &row);
   const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
-  if (record && record->wall_s > 0.0) row.frames_per_s = *row.frames / record->wall_s;
+  // No process runs in less than a millisecond: a shorter wall time is a damaged record, and
+  // its frames/s would print with hundreds of digits.
+  if (record && record->wall_s >= 1e-3) row.frames_per_s = *row.frames / record->wall_s;
   return row;
 }
 
@@ -119,15 +121,21 @@ BatchSummary SummarizeDrives(const std::string& dir, const std::vector<std::stri
   BatchSummary summary;
   for (const std::string& name : names) {
     const std::string drive_dir = DriveFolder(dir, name);
-    const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
-    if (!record) {
-      summary.unfinished.push_back({name, "not run"});
-    } else if (record->exit_status != 0) {
-      summary.unfinished.push_back(
-          {name, "failed (exit status " + std::to_string(record->exit_status) + ")" +
-                     (record->error.empty() ? std::string() : ": " + record->error)});
-    } else {
-      summary.rows.push_back(ReadDriveRow(drive_dir, name));
+    // A damaged record or output is that drive's problem, listed with it: the others are
+    // still summarised.
+    try {
+      const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
+      if (!record) {
+        summary.unfinished.push_back({name, "not run"});
+      } else if (record->exit_status != 0) {
+        summary.unfinished.push_back(
+            {name, "failed (exit status " + std::to_string(record->exit_status) + ")" +
+                       (record->error.empty() ? std::string() : ": " + record->error)});
+      } else {
+        summary.rows.push_back(ReadDriveRow(drive_dir, name));
+      }
+    } catch (const Error& error) {
+      summary.unfinished.push_back({name, std::string("damaged: ") + error.what()});
     }
   }
   DriveRow mean;

@@ -59,7 +59,8 @@ struct BatchSummary {
 DriveRow ReadDriveRow(const std::string& drive_dir, const std::string& name);
 
 // The summary of the drives `names` in the batch folder `dir`: a row for each drive whose
-// record says it finished, the others listed as unfinished with the reason.
+// record says it finished, the others listed as unfinished with the reason (a drive whose
+// record or outputs cannot be read as "damaged: " and the error naming the file).
 BatchSummary SummarizeDrives(const std::string& dir, const std::vector<std::string>& names);
 
 }  // namespace roadscale::batch

@@ -127,16 +127,46 @@ TEST(SummaryTableTest, FailedAndMissingDrivesAreListedAndTheOthersKeepTheirRows)
   EXPECT_THAT(FormatSummaryHtml(summary), HasSubstr("<a href=\"good/report.html\">good</a>"));
 }
 
-TEST(SummaryTableTest, MalformedFramesFileIsAnErrorNamingIt) {
+// A record's wall time of 1e-300 s printed a frames/s of hundreds of digits (issue 30).
+TEST(SummaryTableTest, AWallTimeNoProcessTakesGivesNoFramesPerSecond) {
+  TempDir batch;
+  WriteDrive(batch, "a", "");
+  DriveRecord record = *ReadDriveRecord(batch.File("a"));
+  record.wall_s = 1e-300;
+  WriteDriveRecord(batch.File("a"), record);
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"a"});
+  ASSERT_EQ(summary.rows.size(), 1U);
+  EXPECT_FALSE(summary.rows[0].frames_per_s.has_value());
+  EXPECT_LT(FormatSummaryMarkdown(summary).size(), 1000U);
+}
+
+// Raw HTML, a link or a '|' in an error reason rendered in summary.md (issue 30).
+TEST(SummaryTableTest, MarkdownShowsErrorReasonsAsText) {
+  BatchSummary summary;
+  summary.unfinished.push_back({"a", "failed: <script>x()</script> [y](javascript:z) a|b & c"});
+  const std::string markdown = FormatSummaryMarkdown(summary);
+  EXPECT_THAT(markdown, HasSubstr("- a: failed: \\<script\\>x()\\</script\\> "
+                                  "\\[y\\](javascript:z) a\\|b \\& c\n"));
+  EXPECT_EQ(markdown.find("<script>"), std::string::npos);
+}
+
+// One damaged drive stopped the whole summary (issue 30, defect 7): it is listed as unfinished
+// with the damage, and the other drives keep their rows.
+TEST(SummaryTableTest, ADamagedDriveIsListedWithTheDamageAndTheOthersKeepTheirRows) {
   TempDir batch;
   WriteDrive(batch, "a", "");
   WriteTextFile(batch.File("a/frames.csv"), "frame,tracks\n0,1\n");
-  try {
-    SummarizeDrives(batch.path().string(), {"a"});
-    ADD_FAILURE() << "no error";
-  } catch (const Error& error) {
-    EXPECT_THAT(error.what(), HasSubstr("frames.csv:1: no status column"));
-  }
+  WriteDrive(batch, "good", Metrics("1.0", "0.01", "0.5", "0.4", "1.0"));
+  WriteDrive(batch, "cut", Metrics("1.0", "0.01", "0.5", "0.4", "1.0"));
+  WriteTextFile(batch.File("cut/batch_drive.json"), "{\"name\": \"cut\", \"finge");
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"a", "good", "cut"});
+  ASSERT_EQ(summary.rows.size(), 1U);
+  EXPECT_EQ(summary.rows[0].name, "good");
+  ASSERT_EQ(summary.unfinished.size(), 2U);
+  EXPECT_EQ(summary.unfinished[0].name, "a");
+  EXPECT_THAT(summary.unfinished[0].reason, HasSubstr("frames.csv:1: no status column"));
+  EXPECT_EQ(summary.unfinished[1].name, "cut");
+  EXPECT_THAT(summary.unfinished[1].reason, HasSubstr("batch_drive.json: not a drive record"));
 }
 
 }  // namespace

@@ -10,9 +10,10 @@ namespace roadscale {
 void CheckCameraHeight(double h0, const char* option) {
   char text[160];
   std::snprintf(text, sizeof(text),
-                "the camera height above the road must be in (0, %g] metres, got %g",
-                kMaxCameraHeightM, h0);
-  CheckOption(std::isfinite(h0) && h0 > 0.0 && h0 <= kMaxCameraHeightM, option, text);
+                "the camera height above the road must be in [%g, %g] metres, got %g",
+                kMinCameraHeightM, kMaxCameraHeightM, h0);
+  CheckOption(std::isfinite(h0) && h0 >= kMinCameraHeightM && h0 <= kMaxCameraHeightM, option,
+              text);
 }
 
 }  // namespace roadscale

@@ -1,16 +1,18 @@
 #include "roadscale/io/camera_setup.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
+#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
 #include "roadscale/geometry/camera_height.h"
+#include "roadscale/geometry/field_of_view.h"
+#include "roadscale/io/distortion_check.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/yaml_file.h"
 
@@ -35,10 +37,10 @@ double ReadDouble(const YAML::Node& block, const char* key, const std::string& p
   const YAML::Node node = RequireKey(block, key, path);
   const std::string& text = node.Scalar();
   char* end = nullptr;
-  errno = 0;
+  // strtod's ERANGE is not checked: an overflow is infinite (refused below), and an underflow
+  // (k1: 1e-320) is a number, as close to 0 as a double gets; the range checks judge it.
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
-      !std::isfinite(value)) {
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) {
     ThrowFileError(path, YamlLine(node.Mark()),
                    std::string("Camera.") + key + ": expected a number, found '" + text + "'");
   }
@@ -73,6 +75,24 @@ std::vector<double> ReadDistortion(const YAML::Node& block, const std::string& p
   return coefficients;
 }
 
+// Every key a Camera: block may hold; `name` is a label for people, not read.
+constexpr const char* kCameraKeys[] = {"name", "fx", "fy", "cx", "cy", "width", "height", "h0",
+                                       "k1",   "k2", "p1", "p2", "k3", "k4",    "k5",     "k6"};
+
+// A typo (K1:) or a term of a model roadscale does not implement (OpenCV's thin prism s1, k7)
+// would silently drop that term: every other key is an error.
+void RejectUnknownKeys(const YAML::Node& block, const std::string& path) {
+  for (const auto& item : block) {
+    const std::string key = item.first.as<std::string>();
+    if (std::find(std::begin(kCameraKeys), std::end(kCameraKeys), key) == std::end(kCameraKeys)) {
+      ThrowFileError(path, YamlLine(item.first.Mark()),
+                     "unknown key 'Camera." + key +
+                         "' (expected fx, fy, cx, cy, width, height, h0, name and OpenCV's "
+                         "distortion k1, k2, p1, p2, k3, k4, k5, k6)");
+    }
+  }
+}
+
 // The shortest text that reads back as the same double.
 std::string ShortestRoundTrip(double value) {
   char buffer[64];
@@ -87,12 +107,15 @@ void CameraSetup::Check() const {
   CheckOption(camera.cx >= 0.0 && camera.cx <= camera.width && camera.cy >= 0.0 &&
                   camera.cy <= camera.height,
               "camera.cx/cy", "the principal point must lie inside the image");
+  CheckFocalLength(camera.fx, camera.width, "camera.fx");
+  CheckFocalLength(camera.fy, camera.height, "camera.fy");
   CheckCameraHeight(h0, "camera.h0");
   CheckOption(distortion.empty() || distortion.size() == 5 || distortion.size() == 8,
               "camera.distortion", "needs 0, 5 (k1 k2 p1 p2 k3) or 8 (with k4 k5 k6) coefficients");
   for (double coefficient : distortion) {
     CheckOption(std::isfinite(coefficient), "camera.distortion", "coefficients must be finite");
   }
+  CheckDistortionMap(camera, distortion);
 }
 
 CameraSetup ReadCameraYaml(const std::string& path) {
@@ -104,6 +127,7 @@ CameraSetup ReadCameraYaml(const std::string& path) {
     ThrowFileError(path, YamlLine(block.Mark()),
                    "'Camera:' must be a block of keys (fx, fy, cx, cy, width, height, h0)");
   }
+  RejectUnknownKeys(block, path);
 
   CameraSetup setup;
   setup.camera.fx = ReadDouble(block, "fx", path);
@@ -128,8 +152,7 @@ void WriteCameraYaml(const std::string& path, const CameraSetup& setup) {
   } catch (const Error& e) {
     ThrowFileError(path, std::string("refusing to write an invalid camera: ") + e.what());
   }
-  std::ofstream file(path);
-  if (!file) ThrowFileError(path, "cannot open for writing");
+  std::ostringstream file;
   const PinholeCamera& c = setup.camera;
   file << "# Pinhole camera (of the undistorted image), pixels; h0: camera height above the "
           "road, m;\n# k1.. p2..: lens distortion (OpenCV's model), when there is any.\n"
@@ -144,8 +167,7 @@ void WriteCameraYaml(const std::string& path, const CameraSetup& setup) {
   for (size_t i = 0; i < setup.distortion.size(); ++i) {
     file << "  " << kDistortionKeys[i] << ": " << ShortestRoundTrip(setup.distortion[i]) << '\n';
   }
-  file.flush();
-  if (!file) ThrowFileError(path, "write failed");
+  WriteFileAtomically(path, file.str());
 }
 
 }  // namespace roadscale

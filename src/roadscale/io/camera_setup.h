@@ -21,8 +21,9 @@ struct CameraSetup {
   std::vector<double> distortion;
 
   // Throws Error unless the intrinsics are valid (see PinholeCamera::Check), the principal
-  // point lies inside the image, h0 is in (0, 100] m and the distortion has 0, 5 or 8 finite
-  // coefficients.
+  // point lies inside the image, the focal lengths give a field of view a lens can have
+  // (CheckFocalLength), h0 is a camera height (CheckCameraHeight) and the distortion has 0, 5 or
+  // 8 finite coefficients whose undistortion map is usable (CheckDistortionMap).
   void Check() const;
 };
 
@@ -42,10 +43,12 @@ struct CameraSetup {
 //     p2: -0.0001
 //     k3: 0.0
 //
-// Every key but the distortion is required (h0 too: a silently assumed height would silently
-// scale every result). Other top-level blocks (`Frontend:`, `Scale:`, ...) and other keys inside
-// `Camera:` are ignored, so a project config file can be passed as it is. Throws Error
-// naming the file, the line and the missing or invalid key. The result has passed Check().
+// Every key but the distortion (and `name`, a label) is required (h0 too: a silently assumed
+// height would silently scale every result). Other top-level blocks (`Frontend:`, `Scale:`, ...)
+// are ignored, so a project config file can be passed as it is; any other key inside `Camera:`
+// is an error (a typo such as K1, or a distortion term roadscale does not model, would silently
+// drop it). Throws Error naming the file, the line and the missing, unknown or invalid key. The
+// result has passed Check().
 CameraSetup ReadCameraYaml(const std::string& path);
 
 // Writes a file that ReadCameraYaml reads back to the same doubles. Throws Error naming the

@@ -154,7 +154,7 @@ TEST(CameraSetup, DuplicateKeyDirectoryAndAbsurdHeightAreErrors) {
       "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
       "  h0: 1650\n");
   EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(millimetres); }),
-              HasSubstr("must be in (0, 100] metres, got 1650"));
+              HasSubstr("must be in [0.05, 100] metres, got 1650"));
 }
 
 TEST(CameraSetup, LensDistortionIsReadAndWrittenBack) {
@@ -177,13 +177,85 @@ TEST(CameraSetup, LensDistortionIsReadAndWrittenBack) {
               HasSubstr("bad.yaml:9: Camera.k2: expected a number, found 'strong'"));
 }
 
+// A typo or a term roadscale does not model silently dropped that term (issue 30, defect 4).
+TEST(CameraSetup, UnknownKeysInTheCameraBlockAreErrors) {
+  TempDir dir;
+  const std::string base =
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n";
+  for (const std::string key : {"K1", "s1", "k7", "focal"}) {
+    const std::string path = WriteTextFile(dir.File(key + ".yaml"), base + "  " + key + ": 0.1\n");
+    EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(path); }),
+                HasSubstr(path + ":9: unknown key 'Camera." + key + "' (expected fx, fy"));
+  }
+}
+
+// Coefficients that pass the finiteness check but make the undistorted frames blank or folded
+// (issue 30, defect 5): an error naming the file and the coefficient.
+TEST(CameraSetup, UnusableDistortionNamesTheFileAndTheCoefficient) {
+  TempDir dir;
+  const std::string base =
+      "Camera:\n  fx: 718.856\n  fy: 718.856\n  cx: 607.1928\n  cy: 185.2157\n  width: 1241\n"
+      "  height: 376\n  h0: 1.65\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"  k1: 1e6\n", "camera.k1: 1e+06 leaves"},
+      {"  k1: -1\n", "camera.k1: -1 folds the undistortion map"},
+      {"  k2: 0.05\n  k4: -1.5\n", "camera.k4: -1.5 makes the rational model's denominator"}};
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const std::string path =
+        WriteTextFile(dir.File("lens" + std::to_string(i) + ".yaml"), base + cases[i].first);
+    EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(path); }),
+                HasSubstr(path + ":2: Camera: invalid option " + cases[i].second));
+  }
+  // A strong barrel lens (the rendered drives'), a pincushion and a rational lens are fine.
+  for (const std::string lens :
+       {"  k1: -0.3\n  k2: 0.09\n", "  k1: 0.2\n", "  k1: 0.3\n  k4: 0.25\n  p1: 0.001\n"}) {
+    EXPECT_NO_THROW(ReadCameraYaml(WriteTextFile(dir.File("good.yaml"), base + lens))) << lens;
+  }
+}
+
+// "k1: 1e-320" was "expected a number" (issue 30): it is a number, a subnormal one.
+TEST(CameraSetup, ATinyCoefficientIsANumber) {
+  TempDir dir;
+  const std::string path = WriteTextFile(
+      dir.File("tiny.yaml"),
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n  k1: 1e-320\n");
+  EXPECT_EQ(ReadCameraYaml(path).distortion.at(0), 1e-320);
+  const std::string huge = WriteTextFile(
+      dir.File("huge.yaml"),
+      "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n"
+      "  h0: 1.5\n  k1: 1e400\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(huge); }),
+              HasSubstr("Camera.k1: expected a number, found '1e400'"));
+}
+
+// h0 1e-300 and fx 7.2e7 gave unscaled or identity trajectories (issue 30, defect 6).
+TEST(CameraSetup, HeightAndFocalLengthMustBePhysical) {
+  TempDir dir;
+  const std::string tail = "  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n";
+  const std::string tiny_h0 = WriteTextFile(
+      dir.File("h0.yaml"), "Camera:\n  fx: 700\n  fy: 700\n" + tail + "  h0: 1e-300\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(tiny_h0); }),
+              HasSubstr(tiny_h0 + ":2: Camera: invalid option camera.h0: the camera height above "
+                                  "the road must be in [0.05, 100] metres, got 1e-300"));
+  const std::string long_fx = WriteTextFile(
+      dir.File("fx.yaml"), "Camera:\n  fx: 7.2e7\n  fy: 700\n" + tail + "  h0: 1.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(long_fx); }),
+              HasSubstr(long_fx + ":2: Camera: invalid option camera.fx: 7.2e+07 px over an "
+                                  "image side of 640 px is no lens's focal length"));
+  const std::string short_fy = WriteTextFile(
+      dir.File("fy.yaml"), "Camera:\n  fx: 700\n  fy: 1e-300\n" + tail + "  h0: 1.5\n");
+  EXPECT_THAT(ErrorOf([&] { ReadCameraYaml(short_fy); }), HasSubstr("invalid option camera.fy"));
+}
+
 TEST(CameraSetup, WriterRefusesAnInvalidCameraAndAnUnwritablePath) {
   TempDir dir;
   CameraSetup bad = ExampleSetup();
   bad.h0 = 0.0;
   EXPECT_THROW(WriteCameraYaml(dir.File("c.yaml"), bad), Error);
   EXPECT_THAT(ErrorOf([&] { WriteCameraYaml(dir.File("no/such/dir/c.yaml"), ExampleSetup()); }),
-              HasSubstr("cannot open for writing"));
+              HasSubstr("no/such/dir/c.yaml: cannot write"));
 }
 
 }  // namespace

@@ -332,6 +332,13 @@ KittiSequence::KittiSequence(const FrameSourceOptions& options) {
   const cv::Mat first = LoadImage(FramePath(0), false, 0, 0);
   const std::string calib_path = (dir / "calib.txt").string();
   camera_.camera = ReadKittiCamera(calib_path, kitti_camera_, first.cols, first.rows);
+  try {
+    CameraSetup intrinsics;  // h0 and the lens come later, from elsewhere than calib.txt
+    intrinsics.camera = camera_.camera;
+    intrinsics.Check();
+  } catch (const Error& e) {
+    ThrowFileError(calib_path, e.what());
+  }
   camera_.h0 = KittiCameraHeight(options, dir, camera_.camera, &camera_.distortion, &notes_);
   camera_.Check();
   UndistortWithCamerasLens();

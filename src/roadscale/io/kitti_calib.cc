@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 #include "roadscale/util/text_parsing.h"
@@ -112,15 +112,9 @@ void WriteKittiCalib(const std::string& path, const PinholeCamera& camera) {
       0.0, 0.0, -1.0, 0.0,    //
       1.0, 0.0, 0.0, 0.0;
 
-  std::ofstream file(path);
-  if (!file) ThrowFileError(path, "cannot open for writing");
-  file << FormatRow("P0", p) << '\n'
-       << FormatRow("P1", p_right) << '\n'
-       << FormatRow("P2", p) << '\n'
-       << FormatRow("P3", p_right) << '\n'
-       << FormatRow("Tr", tr) << '\n';
-  file.flush();
-  if (!file) ThrowFileError(path, "write failed");
+  WriteFileAtomically(path, FormatRow("P0", p) + '\n' + FormatRow("P1", p_right) + '\n' +
+                                FormatRow("P2", p) + '\n' + FormatRow("P3", p_right) + '\n' +
+                                FormatRow("Tr", tr) + '\n');
 }
 
 std::vector<double> ReadKittiTimes(const std::string& path) {

@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 
 #include "roadscale/io/pose_row_check.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 #include "roadscale/util/text_parsing.h"
@@ -21,11 +21,9 @@ std::string FormatNumber(double value) {
 
 template <typename RowFormatter>
 void WriteRows(const std::string& path, size_t count, RowFormatter format_row) {
-  std::ofstream file(path);
-  if (!file) ThrowFileError(path, "cannot open for writing");
-  for (size_t i = 0; i < count; ++i) file << format_row(i) << '\n';
-  file.flush();
-  if (!file) ThrowFileError(path, "write failed");
+  std::string text;
+  for (size_t i = 0; i < count; ++i) text += format_row(i) + '\n';
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace

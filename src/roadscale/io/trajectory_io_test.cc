@@ -1,5 +1,11 @@
 #include "roadscale/io/trajectory_io.h"
 
+#include <csignal>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -36,6 +42,36 @@ TEST(TrajectoryIo, KittiRoundTripIsExact) {
   for (size_t i = 0; i < read.size(); ++i) {
     EXPECT_EQ(read.world_from_cam[i].matrix(), written.world_from_cam[i].matrix()) << i;
   }
+}
+
+// A full disk left gt_poses_kitti.txt cut mid-row (issue 30, defect 10): a write that fails
+// (here at the 1 KiB file size limit, as on a full disk) leaves the previous file whole.
+TEST(TrajectoryIo, AFailedWriteLeavesThePreviousFileWhole) {
+  TempDir dir;
+  const std::string path = dir.File("gt_poses_kitti.txt");
+  WriteKittiTrajectory(path, ExampleTrajectory());
+  const std::string before = testing::ReadFileBytes(path);
+  Trajectory longer;
+  for (int i = 0; i < 50; ++i) {
+    longer.world_from_cam.push_back(ExampleTrajectory().world_from_cam[static_cast<size_t>(i % 4)]);
+  }
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{1024, 1024};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      WriteKittiTrajectory(path, longer);
+    } catch (const Error&) {
+      _exit(3);
+    }
+    _exit(4);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 3) << "the write did not fail";
+  EXPECT_EQ(testing::ReadFileBytes(path), before);
 }
 
 TEST(TrajectoryIo, TumRoundTripKeepsTimestampsAndPoses) {

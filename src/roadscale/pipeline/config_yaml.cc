@@ -1,9 +1,9 @@
 #include "roadscale/pipeline/config_yaml.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -14,6 +14,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "roadscale/geometry/camera_height.h"
+#include "roadscale/geometry/field_of_view.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/yaml_file.h"
 
@@ -99,7 +101,11 @@ std::vector<Block> Blocks(RunConfig& c) {
       {"Camera",
        {Optional("fx", &c.camera.fx), Optional("fy", &c.camera.fy), Optional("cx", &c.camera.cx),
         Optional("cy", &c.camera.cy), Optional("width", &c.camera.width),
-        Optional("height", &c.camera.height), Optional("h0", &c.camera.h0)}},
+        Optional("height", &c.camera.height), Optional("h0", &c.camera.h0),
+        Optional("k1", &c.camera.distortion[0]), Optional("k2", &c.camera.distortion[1]),
+        Optional("p1", &c.camera.distortion[2]), Optional("p2", &c.camera.distortion[3]),
+        Optional("k3", &c.camera.distortion[4]), Optional("k4", &c.camera.distortion[5]),
+        Optional("k5", &c.camera.distortion[6]), Optional("k6", &c.camera.distortion[7])}},
       {"Frontend",
        {Enum("detector", &d.type, {"sift", "orb", "brisk", "akaze", "fast"}),
         Scalar("cell_size_px", &d.cell_size_px),
@@ -261,9 +267,18 @@ void CheckValues(const RunConfig& config) {
   for (const auto& [focal, name] : {std::pair{camera.fx, "camera.fx"}, {camera.fy, "camera.fy"}}) {
     if (focal) CheckOption(std::isfinite(*focal) && *focal > 0.0, name, "must be positive");
   }
+  for (const std::optional<double>& coefficient : camera.distortion) {
+    if (coefficient) {
+      CheckOption(std::isfinite(*coefficient), "camera.distortion", "coefficients must be finite");
+    }
+  }
   for (const auto& [side, name] :
        {std::pair{camera.width, "camera.width"}, {camera.height, "camera.height"}}) {
     if (side) CheckOption(*side > 0, name, "must be positive");
+  }
+  for (const auto& [focal, side, name] : {std::tuple{camera.fx, camera.width, "camera.fx"},
+                                          {camera.fy, camera.height, "camera.fy"}}) {
+    if (focal && side && *side > 0) CheckFocalLength(*focal, *side, name);
   }
   for (const auto& [centre, side, name] : {std::tuple{camera.cx, camera.width, "camera.cx"},
                                            {camera.cy, camera.height, "camera.cy"}}) {
@@ -305,6 +320,22 @@ std::string KeyNames(const Block& block) {
 }
 
 }  // namespace
+
+std::vector<double> RunConfig::Camera::Distortion() const {
+  size_t used = 0;
+  for (size_t i = 0; i < distortion.size(); ++i) {
+    if (distortion[i]) used = i < 5 ? std::max<size_t>(used, 5) : 8;
+  }
+  std::vector<double> coefficients(used, 0.0);
+  for (size_t i = 0; i < used; ++i) coefficients[i] = distortion[i].value_or(0.0);
+  return coefficients;
+}
+
+void RunConfig::Camera::SetDistortion(const std::vector<double>& coefficients) {
+  for (size_t i = 0; i < distortion.size(); ++i) {
+    distortion[i] = i < coefficients.size() ? std::optional<double>(coefficients[i]) : std::nullopt;
+  }
+}
 
 void ReadRunConfig(const std::string& path, RunConfig* config) {
   const YAML::Node root = LoadYamlFile(path, "config file");
@@ -359,6 +390,9 @@ void ReadRunConfig(const std::string& path, RunConfig* config) {
   if (given != 0 && given != 6) {
     ThrowFileError(path, "Camera: give all of fx, fy, cx, cy, width, height, or none");
   }
+  if (given == 0 && !config->camera.Distortion().empty()) {
+    ThrowFileError(path, "Camera: the lens's k1..k6, p1, p2 go with fx, fy, cx, cy, width, height");
+  }
   CheckConfigValues(path, initial, read_keys, *config);
 }
 
@@ -378,10 +412,7 @@ std::string FormatRunConfig(const RunConfig& config) {
 }
 
 void WriteRunConfig(const std::string& path, const RunConfig& config) {
-  std::ofstream file(path, std::ios::out | std::ios::trunc);
-  file << FormatRunConfig(config);
-  file.flush();
-  if (!file) ThrowFileError(path, "cannot write the file");
+  WriteFileAtomically(path, FormatRunConfig(config));
 }
 
 }  // namespace roadscale

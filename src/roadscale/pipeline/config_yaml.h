@@ -1,7 +1,9 @@
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "roadscale/pipeline/sequential_pipeline.h"
 #include "roadscale/scale/scale_estimator.h"
@@ -14,12 +16,18 @@ namespace roadscale {
 // YAML names, so that the modules do not depend on a file format.
 struct RunConfig {
   // Camera: the intrinsics (for --images / --video: all of fx fy cx cy width height, or
-  // none) and h0, the camera height above the road.
+  // none), h0, the camera height above the road, and the lens's distortion (OpenCV's k1 k2 p1
+  // p2 k3 k4 k5 k6, each optional; only with the intrinsics), so that config_used.yaml repeats
+  // a run through a distorting lens.
   struct Camera {
     std::optional<double> fx, fy, cx, cy;
     std::optional<int> width, height;
     std::optional<double> h0;
+    std::array<std::optional<double>, 8> distortion;
     bool HasIntrinsics() const { return fx.has_value(); }
+    // As CameraSetup::distortion: none given is empty, k4..k6 make 8 coefficients, else 5.
+    std::vector<double> Distortion() const;
+    void SetDistortion(const std::vector<double>& coefficients);
   } camera;
   PipelineOptions pipeline;
   // Scale: "road" (the paper's method) or "oracle" (the ground truth's step lengths).

@@ -4,6 +4,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +83,45 @@ TEST(RunConfigYaml, WrittenConfigReadsBackToTheSameFile) {
   EXPECT_EQ(back.scale.ransac.inlier_threshold, 0.1 + 0.2);
   EXPECT_EQ(back.segmentation.model, "models/a b.yaml");
   EXPECT_EQ(*back.camera.width, 1241);
+}
+
+// config_used.yaml of a run through a distorting lens dropped the lens, so that repeating the
+// run with it gave other poses (issue 30, defect 3).
+TEST(RunConfigYaml, TheLensDistortionIsWrittenAndReadBack) {
+  testing::TempDir dir;
+  RunConfig config;
+  config.camera.fx = 718.856;
+  config.camera.fy = 718.856;
+  config.camera.cx = 607.1928;
+  config.camera.cy = 185.2157;
+  config.camera.width = 1241;
+  config.camera.height = 376;
+  config.camera.SetDistortion({-0.3, 0.09, 0.0, 0.001, 1.0 / 3.0});
+  const std::string text = FormatRunConfig(config);
+  EXPECT_NE(text.find("  k1: -0.3\n  k2: 0.09\n  p1: 0\n  p2: 0.001\n  k3: 0.333"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("k4"), std::string::npos) << text;
+  RunConfig back;
+  ReadRunConfig(WriteFile(dir, text), &back);
+  EXPECT_EQ(back.camera.Distortion(), (std::vector<double>{-0.3, 0.09, 0.0, 0.001, 1.0 / 3.0}));
+  EXPECT_EQ(FormatRunConfig(back), text);
+
+  RunConfig rational;
+  ReadRunConfig(WriteFile(dir,
+                          "Camera:\n  fx: 700\n  fy: 700\n  cx: 320\n  cy: 240\n"
+                          "  width: 640\n  height: 480\n  k6: 0.01\n"),
+                &rational);
+  EXPECT_EQ(rational.camera.Distortion(), (std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0.01}));
+  RunConfig pinhole;
+  pinhole.camera.SetDistortion({});
+  EXPECT_TRUE(pinhole.camera.Distortion().empty());
+  EXPECT_EQ(FormatRunConfig(pinhole), FormatRunConfig(RunConfig()));
+
+  // A lens without the camera it belongs to is an error.
+  EXPECT_EQ(ErrorOf(WriteFile(dir, "Camera:\n  k1: -0.3\n")),
+            (dir.path() / "config.yaml").string() +
+                ": Camera: the lens's k1..k6, p1, p2 go with fx, fy, cx, cy, width, height");
 }
 
 // config/kitti.yaml is the documented list of keys: it must hold every key the program
@@ -168,7 +208,7 @@ TEST(RunConfigYaml, RangeErrorsNameTheFileAndTheKeysLine) {
   EXPECT_EQ(ErrorOf(height),
             dir.File("config.yaml") +
                 ":2: Camera.h0: invalid option camera.h0: the camera height above the road must "
-                "be in (0, 100] metres, got 1650");
+                "be in [0.05, 100] metres, got 1650");
   const std::string camera = WriteFile(
       dir, "Camera:\n  fx: 700\n  fy: 0\n  cx: 320\n  cy: 240\n  width: 640\n  height: 480\n");
   EXPECT_EQ(ErrorOf(camera).rfind(dir.File("config.yaml") + ":3: Camera.fy: invalid option ", 0),

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "roadscale/eval/metrics_json.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -197,10 +197,7 @@ std::vector<std::string> WriteRunReport(const std::string& out_dir, const RunRep
   std::vector<std::string> written;
   if (evaluation) {
     const std::string path = (std::filesystem::path(out_dir) / "metrics.json").string();
-    std::ofstream file(path, std::ios::out | std::ios::trunc);
-    file << FormatMetricsJson(*evaluation);
-    file.flush();
-    if (!file) ThrowFileError(path, "cannot write the file");
+    WriteFileAtomically(path, FormatMetricsJson(*evaluation));
     written.push_back(path);
   }
   HtmlReportInput input;

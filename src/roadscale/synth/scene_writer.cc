@@ -74,6 +74,12 @@ void CheckSequenceName(const std::string& sequence) {
 void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& options) {
   CheckSequenceName(options.sequence);
   if (options.max_frames < 0) throw Error("max_frames must be >= 0 (0: every frame)");
+  const SceneOptions& scene_options = scene.options();
+  CameraSetup setup;
+  setup.camera = scene_options.image.camera;
+  setup.h0 = scene_options.vehicle.h0;
+  setup.distortion = options.distortion;
+  setup.Check();  // a lens no camera.yaml can hold is refused before any file is made
   const fs::path root(options.out_dir);
   const fs::path sequence = root / "sequences" / options.sequence;
   for (const char* folder : {"image_0", "semantic", "depth", "moving"}) {
@@ -87,12 +93,7 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   }
   MakeDirectory(root / "poses");
 
-  const SceneOptions& scene_options = scene.options();
   WriteKittiCalib((sequence / "calib.txt").string(), scene_options.image.camera);
-  CameraSetup setup;
-  setup.camera = scene_options.image.camera;
-  setup.h0 = scene_options.vehicle.h0;
-  setup.distortion = options.distortion;
   WriteCameraYaml((sequence / "camera.yaml").string(), setup);
   std::optional<ImageDistorter> lens;
   if (!options.distortion.empty()) lens.emplace(setup.camera, options.distortion);
