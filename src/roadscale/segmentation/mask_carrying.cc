@@ -17,7 +17,7 @@ namespace {
 // Width of the strips a moving-object mask is cut into, each moved on its own.
 constexpr int kStripWidthPx = 16;
 
-cv::Matx33d ToCv(const Eigen::Matrix3d& m) {
+cv::Matx33d ToCvMatrix(const Eigen::Matrix3d& m) {
   cv::Matx33d out;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) out(r, c) = m(r, c);
@@ -126,7 +126,7 @@ cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_
   roi_from_src.row(0) -= target.x * cur_from_src.row(2);
   roi_from_src.row(1) -= target.y * cur_from_src.row(2);
   cv::Mat warped;
-  cv::warpPerspective(road_mask, warped, ToCv(roi_from_src), target.size(), cv::INTER_NEAREST,
+  cv::warpPerspective(road_mask, warped, ToCvMatrix(roi_from_src), target.size(), cv::INTER_NEAREST,
                       cv::BORDER_CONSTANT, cv::Scalar(0));
   warped.copyTo(out(target));
   return out;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "roadscale/synth/colour_math.h"
 #include "roadscale/synth/random.h"
 
 namespace roadscale::synth {
@@ -10,16 +11,6 @@ namespace {
 
 constexpr Rgb kHorizon{0.86f, 0.89f, 0.93f};
 constexpr Rgb kZenith{0.52f, 0.66f, 0.9f};
-
-double SmoothStep(double edge0, double edge1, double x) {
-  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-Rgb Mix(const Rgb& a, const Rgb& b, double k) {
-  return {static_cast<float>(a.r + (b.r - a.r) * k), static_cast<float>(a.g + (b.g - a.g) * k),
-          static_cast<float>(a.b + (b.b - a.b) * k)};
-}
 
 Rgb SkyColour(const Eigen::Vector3d& direction, uint32_t seed) {
   const double elevation = direction.z();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "roadscale/synth/colour_math.h"
 #include "roadscale/synth/random.h"
 
 namespace roadscale::synth {
@@ -10,18 +11,8 @@ namespace {
 
 double Clamp01(double x) { return std::min(1.0, std::max(0.0, x)); }
 
-double SmoothStep(double edge0, double edge1, double x) {
-  const double t = Clamp01((x - edge0) / (edge1 - edge0));
-  return t * t * (3.0 - 2.0 * t);
-}
-
 Rgb Scale(const Rgb& c, double k) {
   return {static_cast<float>(c.r * k), static_cast<float>(c.g * k), static_cast<float>(c.b * k)};
-}
-
-Rgb Mix(const Rgb& a, const Rgb& b, double k) {
-  return {static_cast<float>(a.r + (b.r - a.r) * k), static_cast<float>(a.g + (b.g - a.g) * k),
-          static_cast<float>(a.b + (b.b - a.b) * k)};
 }
 
 Rgb Grey(double v) {

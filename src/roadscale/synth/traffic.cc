@@ -3,15 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "roadscale/synth/colour_math.h"
+
 namespace roadscale::synth {
-namespace {
-
-double SmoothStep(double edge0, double edge1, double x) {
-  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 Traffic::Traffic(const SceneOptions& options, const CentreLine& line, const LateralLayout& layout,
                  const VehicleMotion& ego, double duration, double u_begin, double u_end,

@@ -16,7 +16,7 @@ namespace {
 using testing::TempDir;
 using testing::WriteTextFile;
 
-std::string ErrorOf(const std::string& path) {
+std::string OpenErrorOf(const std::string& path) {
   try {
     ReadInputFile(path, "camera YAML file");
   } catch (const Error& e) {
@@ -34,23 +34,23 @@ TEST(InputFile, ReadsTheWholeFile) {
 
 TEST(InputFile, ADirectoryIsNamedAsSuch) {
   TempDir dir;
-  EXPECT_EQ(ErrorOf(dir.path().string()),
+  EXPECT_EQ(OpenErrorOf(dir.path().string()),
             dir.path().string() + ": cannot open camera YAML file: is a directory");
   EXPECT_THROW(CheckInputFile(dir.path().string(), "image"), Error);
 }
 
 TEST(InputFile, MissingFileAndEmptyPath) {
   TempDir dir;
-  EXPECT_EQ(ErrorOf(dir.File("absent.yaml")),
+  EXPECT_EQ(OpenErrorOf(dir.File("absent.yaml")),
             dir.File("absent.yaml") + ": cannot open camera YAML file: no such file");
-  EXPECT_EQ(ErrorOf(""), "'': cannot open camera YAML file: the path is empty");
+  EXPECT_EQ(OpenErrorOf(""), "'': cannot open camera YAML file: the path is empty");
 }
 
 TEST(InputFile, SymlinkLoop) {
   TempDir dir;
   std::filesystem::create_symlink(dir.File("b"), dir.File("a"));
   std::filesystem::create_symlink(dir.File("a"), dir.File("b"));
-  EXPECT_EQ(ErrorOf(dir.File("a")),
+  EXPECT_EQ(OpenErrorOf(dir.File("a")),
             dir.File("a") + ": cannot open camera YAML file: too many levels of symbolic links");
 }
 
@@ -59,7 +59,7 @@ TEST(InputFile, PermissionDenied) {
   TempDir dir;
   const std::string path = WriteTextFile(dir.File("secret.yaml"), "Camera: {}\n");
   ASSERT_EQ(chmod(path.c_str(), 0), 0);
-  EXPECT_EQ(ErrorOf(path), path + ": cannot open camera YAML file: permission denied");
+  EXPECT_EQ(OpenErrorOf(path), path + ": cannot open camera YAML file: permission denied");
 }
 
 }  // namespace
