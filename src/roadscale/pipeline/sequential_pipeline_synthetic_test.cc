@@ -303,12 +303,13 @@ class UnevenSegmenter : public Segmenter {
 // The default pipeline on a drive RenderDrive wrote, with its label masks, into dir/run: the
 // estimate and the ground truth.
 std::pair<Trajectory, Trajectory> RunWithLabelMasks(const FrameSourceOptions& source_options,
-                                                    const testing::TempDir& dir) {
+                                                    const testing::TempDir& dir,
+                                                    const PipelineOptions& options = {}) {
   const auto source = OpenFrameSource(source_options);
   UnevenSegmenter segmenter(source_options.input + "/semantic", -1);
   RoadScaleSource road(source->camera().camera, ScaleEstimatorOptions());
   const std::string out = dir.File("run");
-  RunPipeline(*source, {&segmenter}, road, PipelineOptions(), out, RunPipelineOptions());
+  RunPipeline(*source, {&segmenter}, road, options, out, RunPipelineOptions());
   return {ReadKittiTrajectory(out + "/poses_kitti.txt"), *source->ground_truth()};
 }
 
@@ -521,10 +522,16 @@ TEST(SequentialPipelineSynthetic, TheRoadAheadScalesAHighwayDriveWithoutSegmenta
 // end 6.5 m from the truth; without the check (180 degrees) 0.9643 and 22.6 m (docs/benchmarks.md,
 // "The map's direction checked"). The run without the check is not asserted: where such a
 // drive breaks depends on every digit of the run before it.
+// The truck's tracks reach the map because its carried mask is moved with the road only
+// (carry_dynamic_in_place off), as a network that misses a vehicle would let them in. With the
+// default masks, which also keep the truck where it was, the check does not fire on this drive
+// (the same poses with it at 180 degrees).
 TEST(SequentialPipelineSynthetic, TheDirectionCheckKeepsAHighwayPassingATruckOnItsPath) {
   testing::TempDir dir;
   const FrameSourceOptions source_options = RenderDrive("highway", 300, dir, 7, 230);
-  const auto [estimated, truth] = RunWithLabelMasks(source_options, dir);
+  PipelineOptions options;
+  options.segmentation_schedule.carry.dynamic_in_place = false;
+  const auto [estimated, truth] = RunWithLabelMasks(source_options, dir, options);
   ASSERT_EQ(estimated.size(), truth.size());
   const double length = PathLength(truth);
   EXPECT_NEAR(PathLength(estimated) / length, 1.0, 0.02);
