@@ -328,6 +328,15 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
     "$roadscale" rescale --trajectory "$out/gt.txt" --kitti "$seq" --no-segmentation \
     --out "$out/full.rescale"
   awk 'NF != 12 { exit 1 }' "$out/full.rescale/poses_kitti.txt" || fail "full disk: a partial row"
+  # Three frames: the rows and metrics.json fit in 4 KiB, the report does not. The whole-file
+  # outputs are written whole or not at all, with no temporary file left behind.
+  expect_error 1 "full\.short/report\.html: write failed" full_disk \
+    "$roadscale" run --kitti "$seq" --frames 0:3 --no-segmentation --scale oracle --sequential \
+    --out "$out/full.short"
+  [[ ! -e "$out/full.short/report.html" ]] || fail "full disk: a report.html was left"
+  [[ -z "$(find "$out/full.short" -name '*.tmp*')" ]] || fail "full disk: a temporary file was left"
+  python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$out/full.short/metrics.json" ||
+    fail "full disk: metrics.json is not whole"
   mkdir -p "$out/stuck/report.html/inside"
   expect_error 1 "stuck/report\.html: cannot remove the previous run's file" \
     "$roadscale" run --kitti "$seq" --no-segmentation --scale oracle --out "$out/stuck"

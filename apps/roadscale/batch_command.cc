@@ -24,6 +24,7 @@
 #include "commands.h"
 #include "drive_processes.h"
 #include "interrupt.h"
+#include "run_command.h"
 
 namespace roadscale::cli {
 namespace {
@@ -199,7 +200,7 @@ void RunBatch(const BatchArguments& arguments) {
     const std::string dir = batch::DriveFolder(arguments.out, drive.name);
     std::string fingerprint;
     try {
-      fingerprint = batch::DriveFingerprint(drive, ROADSCALE_VERSION);
+      fingerprint = batch::DriveFingerprint(drive, ROADSCALE_VERSION, DefaultModelPath());
       if (batch::IsDriveFinished(dir, fingerprint)) {
         progress.Line(drive.name, "skipped (finished before with the same config)");
         continue;

@@ -27,6 +27,7 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "output_folder.h"
+#include "run_command.h"
 
 namespace roadscale::cli {
 namespace {
@@ -81,7 +82,7 @@ std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
   options.model = arguments.model;
   if (options.model.empty()) {
     // As `roadscale run`: the default network when its files are there, else none, said so.
-    const std::string path = (fs::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
+    const std::string path = DefaultModelPath();
     try {
       ReadSegmentationModel(path);
       options.model = path;

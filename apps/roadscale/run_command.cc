@@ -34,10 +34,6 @@ namespace {
 
 void Note(const std::string& text) { std::cerr << "roadscale: note: " << text << '\n'; }
 
-std::filesystem::path DefaultModelPath() {
-  return std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel;
-}
-
 // The segmenter the config asks for; updates config->segmentation.model to what was used,
 // so that config_used.yaml repeats the run.
 std::unique_ptr<Segmenter> MakeRunSegmenter(RunConfig* config) {
@@ -52,7 +48,7 @@ std::unique_ptr<Segmenter> MakeRunSegmenter(RunConfig* config) {
     return std::make_unique<LabelImageSegmenter>(model, options.masks);
   }
   if (options.model == "default") {
-    const std::string path = DefaultModelPath().string();
+    const std::string path = DefaultModelPath();
     try {
       ReadSegmentationModel(path);
       options.model = path;
@@ -70,6 +66,10 @@ std::string Describe(const RunConfig& config, const Segmenter& segmenter) {
 }
 
 }  // namespace
+
+std::string DefaultModelPath() {
+  return (std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
+}
 
 void RunRun(const RunArguments& arguments) {
   const int inputs =

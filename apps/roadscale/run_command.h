@@ -18,4 +18,8 @@ struct RunArguments : RunRequest {
 // interrupted (Ctrl-C).
 void RunRun(const RunArguments& arguments);
 
+// The segmentation model YAML run loads when none is named (the shipped ESPNetv2 file); run
+// goes without segmentation when it cannot be read.
+std::string DefaultModelPath();
+
 }  // namespace roadscale::cli

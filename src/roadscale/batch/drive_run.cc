@@ -3,6 +3,9 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/segmentation/segmentation_model.h"
+#include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
 
 namespace roadscale::batch {
@@ -69,13 +72,42 @@ std::vector<std::string> RunArguments(const RunRequest& run, const std::string& 
   return arguments;
 }
 
-std::string DriveFingerprint(const BatchDrive& drive, const std::string& roadscale_version) {
+std::string DriveModelFile(const BatchDrive& drive, const std::string& default_model) {
+  if (!drive.labels.empty() || drive.no_segmentation) return {};
+  if (!drive.model.empty()) return drive.model;
+  RunConfig config;
+  if (!drive.config.empty()) ReadRunConfig(drive.config, &config);
+  if (!config.labels.empty() || config.segmentation.model == "none") return {};
+  return config.segmentation.model == "default" ? default_model : config.segmentation.model;
+}
+
+std::string DriveFingerprint(const BatchDrive& drive, const std::string& roadscale_version,
+                             const std::string& default_model) {
   Fnv1a hash;
   hash.Add(roadscale_version);
   for (const std::string& argument : RunArguments(drive, "")) hash.Add(argument);
-  for (const std::string* path : {&drive.config, &drive.camera, &drive.model}) {
-    hash.Add(path->empty() ? std::string() : ReadInputFile(*path, "file of drive " + drive.name));
+  const std::string what = "file of drive " + drive.name;
+  for (const std::string* path : {&drive.config, &drive.camera}) {
+    hash.Add(path->empty() ? std::string() : ReadInputFile(*path, what));
   }
+  const std::string model_file = DriveModelFile(drive, default_model);
+  std::string model_yaml;
+  std::string weights;
+  try {
+    if (!model_file.empty()) {
+      model_yaml = ReadInputFile(model_file, what);
+      const SegmentationModel model = ReadSegmentationModel(model_file);
+      if (model.backend == SegmentationBackend::kOnnx) {
+        weights = ReadInputFile(model.onnx.file.string(), what);
+      }
+    }
+  } catch (const Error&) {
+    if (model_file != default_model) throw;
+    model_yaml.clear();
+    weights.clear();
+  }
+  hash.Add(model_yaml);
+  hash.Add(weights);
   return hash.Hex();
 }
 

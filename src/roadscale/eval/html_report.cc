@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -12,11 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include "roadscale/eval/metrics_json.h"
 #include "roadscale/eval/plots.h"
+#include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -580,18 +577,6 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
   int figures_ = 0;
 };
 
-// Writes all of `text` to `fd`; false on error.
-bool WriteAll(int fd, const std::string& text) {
-  size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<size_t>(n);
-  }
-  return true;
-}
-
 }  // namespace
 
 std::string RenderHtmlReport(const HtmlReportInput& input) { return Page(input).Render(); }
@@ -604,23 +589,7 @@ void WriteHtmlReport(const std::string& path, const HtmlReportInput& input) {
     std::filesystem::create_directories(target.parent_path(), error);
     if (error) ThrowFileError(path, "cannot create the report's folder: " + error.message());
   }
-  // Beside the target, so that the rename stays on one file system and is atomic.
-  const std::string temporary = path + Format(".tmp%ld", static_cast<long>(::getpid()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) ThrowFileError(temporary, std::string("cannot write: ") + std::strerror(errno));
-  const bool written = WriteAll(fd, html) && ::fsync(fd) == 0;
-  int saved_errno = errno;
-  const bool closed = ::close(fd) == 0;
-  if (written && !closed) saved_errno = errno;
-  if (!written || !closed) {
-    std::remove(temporary.c_str());
-    ThrowFileError(temporary, std::string("cannot write: ") + std::strerror(saved_errno));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int rename_errno = errno;
-    std::remove(temporary.c_str());
-    ThrowFileError(path, std::string("cannot replace the report: ") + std::strerror(rename_errno));
-  }
+  WriteFileAtomically(path, html);
 }
 
 }  // namespace roadscale

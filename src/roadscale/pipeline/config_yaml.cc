@@ -307,7 +307,14 @@ void CheckConfigValues(const std::string& path, const RunConfig& initial,
       } catch (const Error&) {
         continue;
       }
-      ThrowAt(path, keys[i].value.Mark(), keys[i].block + "." + keys[i].key + ": " + error.what());
+      // The value found, unless the check's message already ends with it ("..., got 1650").
+      const YAML::Node& value = keys[i].value;
+      const std::string what = error.what();
+      const std::string text = value.IsScalar() ? value.Scalar() : "";
+      const bool said = what.size() >= text.size() &&
+                        what.compare(what.size() - text.size(), text.size(), text) == 0;
+      const std::string found = said ? "" : " (found " + text + ")";
+      ThrowAt(path, value.Mark(), keys[i].block + "." + keys[i].key + ": " + what + found);
     }
     ThrowFileError(path, error.what());
   }
