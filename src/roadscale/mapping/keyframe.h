@@ -31,6 +31,7 @@ struct RoadPairPlane {
 // selection of the next keyframe pair).
 struct Keyframe {
   int frame_index = 0;
+  double timestamp = 0.0;  // seconds; NaN when unknown
   Rigid3d cam_from_world = Rigid3d::Identity();
   // Track id -> pixel of every track seen in this frame. Observations the bundle adjuster
   // rejects are erased.

@@ -22,9 +22,10 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
 }
 
 Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
-                      const Rigid3d& cam_from_world) {
+                      double timestamp, const Rigid3d& cam_from_world) {
   Keyframe keyframe;
   keyframe.frame_index = frontend.frame_index;
+  keyframe.timestamp = timestamp;
   keyframe.cam_from_world = cam_from_world;
   for (const TrackObservation& o : frontend.observations) {
     keyframe.observations[o.track_id] = o.pixel;
@@ -59,6 +60,8 @@ void MappingOptions::Check() const {
   CheckOption(road_pool_pairs >= 1, "mapping.road_pool_pairs", "must be >= 1 (1: no pooling)");
   CheckOption(road_max_height_ratio > 1.0 && std::isfinite(road_max_height_ratio),
               "mapping.road_max_height_ratio", "must be a number > 1");
+  CheckOption(std::isfinite(first_scale_max_speed) && first_scale_max_speed >= 0.0,
+              "mapping.first_scale_max_speed", "must be >= 0 m/s (0: no limit)");
   keyframes.Check();
   landmarks.Check();
   localization.Check();
@@ -74,7 +77,7 @@ std::string MappedFrameCsvHeader() {
   return "keyframe,keyframe_reason,localization,map_scale,landmarks_seen,road_points,pair_scale,"
          "ba_iterations,ba_cost_before,ba_cost_after,ba_ms,window_keyframes,window_landmarks,"
          "window_road_landmarks,ba_removed_observations,alignment_scale,window_road_pairs,"
-         "map_pair_direction_deg,pair_outvoted_map";
+         "map_pair_direction_deg,pair_outvoted_map,first_scale_refused";
 }
 
 std::string LocalizationName(MappedFrame::Localization localization) {
@@ -93,9 +96,10 @@ std::string LocalizationName(MappedFrame::Localization localization) {
 
 std::string FormatMappedFrameCsv(const MappedFrame& frame) {
   const BundleAdjustmentReport& ba = frame.bundle_adjustment;
-  const char* scale = frame.scale == MappedFrame::Scale::kRoad      ? "road"
-                      : frame.scale == MappedFrame::Scale::kCarried ? "carried"
-                                                                    : "none";
+  const char* scale = frame.scale == MappedFrame::Scale::kRoad        ? "road"
+                      : frame.scale == MappedFrame::Scale::kCarried   ? "carried"
+                      : frame.scale == MappedFrame::Scale::kPairFixes ? "pair_fixes"
+                                                                      : "none";
   std::ostringstream out;
   out << std::setprecision(6) << (frame.keyframe ? 1 : 0) << ',' << frame.keyframe_reason << ','
       << LocalizationName(frame.localization) << ',' << scale << ',' << frame.landmarks_seen << ','
@@ -104,7 +108,7 @@ std::string FormatMappedFrameCsv(const MappedFrame& frame) {
       << ba.num_keyframes << ',' << ba.num_landmarks << ',' << ba.num_road_landmarks << ','
       << ba.removed_observations << ',' << frame.alignment_scale << ',' << ba.num_road_pairs << ',';
   if (frame.map_pair_direction_deg) out << *frame.map_pair_direction_deg;
-  out << ',' << (frame.pair_outvoted_map ? 1 : 0);
+  out << ',' << (frame.pair_outvoted_map ? 1 : 0) << ',' << (frame.first_scale_refused ? 1 : 0);
   return out.str();
 }
 
@@ -182,7 +186,8 @@ bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_
 }
 
 std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend,
-                                                   const cv::Mat& road_mask, const cv::Mat& image) {
+                                                   const cv::Mat& road_mask, const cv::Mat& image,
+                                                   double timestamp) {
   PendingFrame pending;
   MappedFrame& mapped = pending.mapped;
   mapped.frame_index = frontend.frame_index;
@@ -192,7 +197,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
   if (!has_frame_) {
     has_frame_ = true;
-    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, Rigid3d::Identity()));
+    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, timestamp, Rigid3d::Identity()));
     mapped.keyframe = true;
     mapped.keyframe_reason = "first";
     pending.keyframe_before = frontend.frame_index;
@@ -229,7 +234,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
   if (reason != KeyframeReason::kNone) {
     mapped.keyframe = true;
     mapped.keyframe_reason = KeyframeReasonName(reason);
-    AddKeyframe(frontend, road_mask, image, cam_from_world, &mapped);
+    AddKeyframe(frontend, road_mask, image, timestamp, cam_from_world, &mapped);
     cam_from_world = window_.keyframes().back().cam_from_world;
   }
 
@@ -243,9 +248,9 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 }
 
 void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
-                                  const cv::Mat& image, const Rigid3d& cam_from_world,
-                                  MappedFrame* mapped) {
-  Keyframe keyframe = MakeKeyframe(frontend, road_mask, image, cam_from_world);
+                                  const cv::Mat& image, double timestamp,
+                                  const Rigid3d& cam_from_world, MappedFrame* mapped) {
+  Keyframe keyframe = MakeKeyframe(frontend, road_mask, image, timestamp, cam_from_world);
   keyframe.baseline_at_creation =
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
@@ -255,11 +260,20 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
   }
   mapped->road_points = MarkRoadLandmarks(mapped);
   if (options_.road_alignment) AlignRoadPair(mapped);
-  if (!scaled_) ScaleMapOnFirstRoad();
+  if (!scaled_) {
+    if (mapped->road_points > 0 && PlausibleSpeed(mapped->pair_scale)) {
+      pair_fixes_before_scale_.push_back(mapped->pair_scale);
+    }
+    DropImplausibleFirstRoad(mapped);
+    ScaleMapOnFirstRoad();
+  }
   mapped->bundle_adjustment =
       AdjustLocalWindow(camera_, camera_height_, options_.bundle_adjustment, &window_);
   last_scale_from_road_ = mapped->bundle_adjustment.scale_from_road;
-  if (last_scale_from_road_) scaled_ = true;
+  if (last_scale_from_road_) {
+    scaled_ = true;
+    scaled_by_fallback_ = false;
+  }
 }
 
 std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
@@ -432,6 +446,32 @@ std::vector<double> KeyframeBackend::RoadPairHeights() const {
   return heights;
 }
 
+bool KeyframeBackend::PlausibleSpeed(double metres_per_unit) const {
+  const std::deque<Keyframe>& keyframes = window_.keyframes();
+  const Keyframe& prev = keyframes[keyframes.size() - 2];
+  const Keyframe& cur = keyframes.back();
+  const double seconds = cur.timestamp - prev.timestamp;
+  if (options_.first_scale_max_speed <= 0.0 || !(seconds > 0.0)) return true;
+  const double baseline = (Centre(cur.cam_from_world) - Centre(prev.cam_from_world)).norm();
+  return !(metres_per_unit * baseline / seconds > options_.first_scale_max_speed);
+}
+
+void KeyframeBackend::DropImplausibleFirstRoad(MappedFrame* mapped) {
+  std::deque<Keyframe>& keyframes = window_.keyframes();
+  if (keyframes.back().road_pair && !PlausibleSpeed(mapped->alignment_scale)) {
+    keyframes.back().road_pair.reset();
+    mapped->first_scale_refused = true;
+  }
+  if (mapped->road_points > 0 && !PlausibleSpeed(mapped->pair_scale)) {
+    const int anchor = keyframes[keyframes.size() - 2].frame_index;
+    for (auto& [id, landmark] : window_.landmarks()) {
+      if (landmark.is_road && landmark.road_anchor_frame == anchor) landmark.is_road = false;
+    }
+    mapped->road_points = 0;
+    mapped->first_scale_refused = true;
+  }
+}
+
 void KeyframeBackend::ScaleMapOnFirstRoad() {
   const bool enough_landmarks =
       window_.CountRoadLandmarks() >= options_.bundle_adjustment.min_road_landmarks;
@@ -439,7 +479,17 @@ void KeyframeBackend::ScaleMapOnFirstRoad() {
   heights.erase(std::remove_if(heights.begin(), heights.end(), [](double h) { return !(h > 0.0); }),
                 heights.end());
   if (heights.empty()) return;
-  const double factor = camera_height_ / Median(heights);
+  RescaleMap(camera_height_ / Median(heights));
+}
+
+void KeyframeBackend::ScaleMapOnPairFixes() {
+  if (!options_.fallback_to_pair_fixes || pair_fixes_before_scale_.empty()) return;
+  RescaleMap(Median(pair_fixes_before_scale_));
+  scaled_ = true;
+  scaled_by_fallback_ = true;
+}
+
+void KeyframeBackend::RescaleMap(double factor) {
   window_.Rescale(factor);
   for (PendingFrame& frame : pending_) {
     frame.keyframe_from_cam.translation() *= factor;
@@ -450,7 +500,8 @@ void KeyframeBackend::ScaleMapOnFirstRoad() {
 
 MappedFrame::Scale KeyframeBackend::CurrentScale() const {
   if (!scaled_) return MappedFrame::Scale::kNone;
-  return last_scale_from_road_ ? MappedFrame::Scale::kRoad : MappedFrame::Scale::kCarried;
+  if (last_scale_from_road_) return MappedFrame::Scale::kRoad;
+  return scaled_by_fallback_ ? MappedFrame::Scale::kPairFixes : MappedFrame::Scale::kCarried;
 }
 
 std::vector<MappedFrame> KeyframeBackend::SlideWindow(bool final) {
@@ -458,6 +509,8 @@ std::vector<MappedFrame> KeyframeBackend::SlideWindow(bool final) {
   const bool waited_enough = max_frames_before_scale_ <= 0 ||
                              static_cast<int>(pending_.size()) >= max_frames_before_scale_;
   if (!final && !scaled_ && !waited_enough) return out;
+  // Frames are about to leave without a scale although pairs saw the road.
+  if (!scaled_) ScaleMapOnPairFixes();
   while (window_.keyframes().size() > static_cast<size_t>(options_.window_size)) {
     Release(window_.keyframes()[1].frame_index, &out);
     window_.RemoveOldestKeyframe();

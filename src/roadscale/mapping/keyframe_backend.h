@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deque>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,23 @@ struct MappingOptions {
   // seed 1 a pair's "road" at 8 times the height (six points on one plane) outvoted eight
   // true road points and shrank the map eightfold.
   double road_max_height_ratio = 1.5;
+  // Until the map has its first road scale, a keyframe pair's road measurement (its selected
+  // road points' plane, or its road alignment) that makes the car faster than this between
+  // the two keyframes (m/s, by the frames' timestamps; 0: no limit) is not taken. A wrong
+  // first scale is the one the map keeps until a road corrects it, and in a jam no road may
+  // come for long: with network-like masks a rendered jam took one alignment at 200 times
+  // its pair's own road points and drove 187 times too far. 70 m/s (250 km/h) is above any
+  // car's speed on a road and far below such errors; an input without timestamps is timed
+  // at 10 Hz (kDefaultFrameRateHz), so a slower one needs a higher limit or 0.
+  double first_scale_max_speed = 70.0;
+  // Where the map has had no road scale of its own when its first frames must be written
+  // (max_frames_before_scale, or the sequence's end), it takes the median of the keyframe
+  // pairs' own road fixes so far (each pair's selected road points, however few; those of a
+  // too fast car left out) rather than writing unit steps, and marks those frames
+  // (MappedFrame::Scale::kPairFixes) until a road scale of the map's own comes. In a rendered
+  // jam with network-like masks the map's window never held the 12 road landmarks it needs
+  // while single pairs saw 3-7 road points. false: such frames stay unscaled.
+  bool fallback_to_pair_fixes = true;
   // Each keyframe pair's road plane also measured on the road's pixels (road_plane_alignment.h)
   // when both keyframes have a road mask and an image: a pair term in the adjustment
   // (bundle_adjustment.road_pair_sigma_m). It needs no road track to survive between the two
@@ -84,8 +102,10 @@ struct MappedFrame {
   bool stationary = false;
   // The map's scale when the pose was written: from the window's road landmarks or road
   // pairs (kRoad, "road" in frames.csv), carried by the map from earlier ones (kCarried,
-  // "carried"), or none yet (kNone, "none").
-  enum class Scale { kRoad, kCarried, kNone } scale = Scale::kNone;
+  // "carried"), from the keyframe pairs' own road fixes where the map never had enough road
+  // for its own (kPairFixes, "pair_fixes": MappingOptions::fallback_to_pair_fixes), or none
+  // yet (kNone, "none").
+  enum class Scale { kRoad, kCarried, kPairFixes, kNone } scale = Scale::kNone;
   // How the pose was found when the frame was written (LocalizationName: the frames.csv
   // column): bundle adjusted as a keyframe, localised against the final landmarks, its
   // arrival pose relative to the keyframe before it rescaled with that interval
@@ -102,6 +122,9 @@ struct MappedFrame {
   int road_points = 0;           // keyframes: road landmarks the pair selection marked
   double pair_scale = 0.0;       // keyframes: h0 / h of the pair's plane, metres per map unit
   double alignment_scale = 0.0;  // keyframes: the same from the road alignment (0: none)
+  // keyframes: a road measurement of the pair was not taken as the map's first scale
+  // (MappingOptions::first_scale_max_speed).
+  bool first_scale_refused = false;
   BundleAdjustmentReport bundle_adjustment;  // keyframes: the adjustment it started
 };
 
@@ -130,8 +153,11 @@ class KeyframeBackend {
   // Takes the frontend's result for the next frame and its road mask (empty: none). Returns
   // the frames whose poses became final, in order.
   // `image` is the frame's grey image (empty: no road alignment).
+  // `timestamp`: the frame's time in seconds (MappingOptions::first_scale_max_speed; NaN:
+  // unknown, no speed check).
   std::vector<MappedFrame> AddFrame(const FrontendFrame& frontend, const cv::Mat& road_mask,
-                                    const cv::Mat& image = cv::Mat());
+                                    const cv::Mat& image = cv::Mat(),
+                                    double timestamp = std::numeric_limits<double>::quiet_NaN());
   // Returns every frame still waiting (call after the last frame).
   std::vector<MappedFrame> Finish();
 
@@ -159,7 +185,17 @@ class KeyframeBackend {
   // own two-view motion, at the predicted distance. False when that fails.
   bool BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_from_world) const;
   void AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
-                   const Rigid3d& cam_from_world, MappedFrame* mapped);
+                   double timestamp, const Rigid3d& cam_from_world, MappedFrame* mapped);
+  // Before the map's first scale: takes back the newest keyframe pair's road landmarks or
+  // road alignment where either makes the car too fast (MappingOptions::first_scale_max_speed).
+  void DropImplausibleFirstRoad(MappedFrame* mapped);
+  // Whether a fix of the newest keyframe pair (metres per map unit; 0: none) keeps the car
+  // below MappingOptions::first_scale_max_speed.
+  bool PlausibleSpeed(double metres_per_unit) const;
+  // MappingOptions::fallback_to_pair_fixes.
+  void ScaleMapOnPairFixes();
+  // Multiplies the map, the waiting frames and the last pose by `factor`.
+  void RescaleMap(double factor);
   // Measures the road plane between the last two keyframes on their road pixels and keeps it
   // on the newer one (Keyframe::road_pair) when the alignment converged.
   void AlignRoadPair(MappedFrame* mapped);
@@ -202,6 +238,9 @@ class KeyframeBackend {
   bool has_frame_ = false;
   bool scaled_ = false;                // the road has scaled the map at least once
   bool last_scale_from_road_ = false;  // ... in the last adjustment
+  bool scaled_by_fallback_ = false;    // by ScaleMapOnPairFixes, and by no road since
+  // The keyframe pairs' road fixes (metres per map unit) while the map has no scale.
+  std::vector<double> pair_fixes_before_scale_;
   Rigid3d last_output_world_from_cam_ = Rigid3d::Identity();
 };
 

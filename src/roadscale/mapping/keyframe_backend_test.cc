@@ -1,5 +1,7 @@
 #include "roadscale/mapping/keyframe_backend.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <opencv2/imgproc.hpp>
@@ -22,14 +24,17 @@ cv::Mat RoadMask(const testing::MappingTestScene& scene, int frame) {
   return mask;
 }
 
+// `frame_period_s`: the frames' timestamps are f times this (NaN: unknown).
 std::vector<MappedFrame> RunBackend(const testing::MappingTestScene& scene, double noise_px,
-                                    const MappingOptions& options = {}, bool road_masks = false) {
+                                    const MappingOptions& options = {}, bool road_masks = false,
+                                    double frame_period_s = std::nan("")) {
   KeyframeBackend backend(scene.camera, scene.camera_height, options, ScaleEstimatorOptions(),
                           TwoViewMotionOptions(), 100);
   std::vector<MappedFrame> mapped;
   for (int f = 0; f < static_cast<int>(scene.cam_from_world.size()); ++f) {
     const cv::Mat mask = road_masks ? RoadMask(scene, f) : cv::Mat();
-    for (MappedFrame& m : backend.AddFrame(scene.Frontend(f, noise_px, 3), mask)) {
+    for (MappedFrame& m :
+         backend.AddFrame(scene.Frontend(f, noise_px, 3), mask, cv::Mat(), f * frame_period_s)) {
       mapped.push_back(std::move(m));
     }
     EXPECT_LE(backend.window().keyframes().size(), 200u);
@@ -65,6 +70,63 @@ TEST(KeyframeBackend, GivesEveryFrameAMetricPoseInOrder) {
   const double truth_length = PathLength(truth);
   EXPECT_NEAR(PathLength(estimated) / truth_length, 1.0, 0.01);
   EXPECT_LT((estimated.back() - truth.back()).norm(), 0.01 * truth_length);
+}
+
+// The first scale is refused where it makes the car faster than first_scale_max_speed: the
+// street is driven at 0.8 m a frame, 8 m/s at 10 Hz.
+TEST(KeyframeBackend, RefusesAFirstScaleThatMakesTheCarTooFast) {
+  const auto scene = testing::MappingTestScene::Street(60, 0.8, 0.3);
+  const auto count = [](const std::vector<MappedFrame>& mapped, MappedFrame::Scale scale) {
+    return std::count_if(mapped.begin(), mapped.end(),
+                         [&](const MappedFrame& m) { return m.scale == scale; });
+  };
+  const auto refusals = [](const std::vector<MappedFrame>& mapped) {
+    return std::count_if(mapped.begin(), mapped.end(),
+                         [](const MappedFrame& m) { return m.first_scale_refused; });
+  };
+  MappingOptions options;
+  options.first_scale_max_speed = 5.0;
+  const std::vector<MappedFrame> too_fast = RunBackend(scene, 0.2, options, false, 0.1);
+  ASSERT_EQ(too_fast.size(), 60u);
+  EXPECT_EQ(count(too_fast, MappedFrame::Scale::kNone), 60);
+  EXPECT_GT(refusals(too_fast), 5);
+  EXPECT_NE(FormatMappedFrameCsv(
+                *std::find_if(too_fast.begin(), too_fast.end(),
+                              [](const MappedFrame& m) { return m.first_scale_refused; }))
+                .back(),
+            '0');
+
+  options.first_scale_max_speed = 10.0;
+  const std::vector<MappedFrame> plausible = RunBackend(scene, 0.2, options, false, 0.1);
+  EXPECT_EQ(refusals(plausible), 0);
+  EXPECT_EQ(plausible.back().scale, MappedFrame::Scale::kRoad);
+  // Without timestamps nothing is refused on speed.
+  options.first_scale_max_speed = 5.0;
+  EXPECT_EQ(refusals(RunBackend(scene, 0.2, options)), 0);
+}
+
+// A window that never holds the road landmarks its own scale needs (min_road_landmarks
+// beyond reach) still gets a scale from the keyframe pairs' own road fixes, marked as such;
+// without the fallback its frames are unscaled.
+TEST(KeyframeBackend, FallsBackToThePairsRoadFixesWhereTheMapGetsNoScale) {
+  const auto scene = testing::MappingTestScene::Street(60, 0.8, 0.3);
+  MappingOptions options;
+  options.bundle_adjustment.min_road_landmarks = 100000;
+  const std::vector<MappedFrame> mapped = RunBackend(scene, 0.2, options);
+  ASSERT_EQ(mapped.size(), 60u);
+  std::vector<Eigen::Vector3d> estimated, truth;
+  for (size_t i = 0; i < mapped.size(); ++i) {
+    EXPECT_EQ(mapped[i].scale, MappedFrame::Scale::kPairFixes) << "frame " << i;
+    estimated.push_back(mapped[i].world_from_cam.translation());
+    truth.push_back(scene.cam_from_world[i].inverse().translation());
+  }
+  EXPECT_NE(FormatMappedFrameCsv(mapped.back()).find(",pair_fixes,"), std::string::npos);
+  EXPECT_NEAR(PathLength(estimated) / PathLength(truth), 1.0, 0.05);
+
+  options.fallback_to_pair_fixes = false;
+  for (const MappedFrame& m : RunBackend(scene, 0.2, options)) {
+    EXPECT_EQ(m.scale, MappedFrame::Scale::kNone);
+  }
 }
 
 TEST(KeyframeBackend, AStoppedCarKeepsItsPose) {

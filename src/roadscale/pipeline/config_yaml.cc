@@ -182,6 +182,8 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("road_min_points_per_pair", &a.road_min_points_per_pair),
         Scalar("road_pool_pairs", &a.road_pool_pairs),
         Scalar("road_max_height_ratio", &a.road_max_height_ratio),
+        Scalar("first_scale_max_speed", &a.first_scale_max_speed),
+        Scalar("fallback_to_pair_fixes", &a.fallback_to_pair_fixes),
         Scalar("road_alignment", &a.road_alignment),
         Scalar("road_alignment_levels", &a.alignment.pyramid_levels),
         Scalar("road_alignment_min_gradient", &a.alignment.min_gradient),

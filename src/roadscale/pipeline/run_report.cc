@@ -59,7 +59,8 @@ std::vector<std::string> ScaleWarnings(const std::vector<FrameRecord>& records) 
   size_t begin = 0;
   while (begin < records.size()) {
     const std::string& status = records[begin].status;
-    if (status != "unscaled" && status != "held" && status != "backfilled") {
+    if (status != "unscaled" && status != "held" && status != "backfilled" &&
+        status != "pair_fixes") {
       ++begin;
       continue;
     }
@@ -71,6 +72,9 @@ std::vector<std::string> ScaleWarnings(const std::vector<FrameRecord>& records) 
     } else if (status == "backfilled" && end - begin + 1 >= 10) {
       warnings.push_back("no scale yet in " + span +
                          ": back-filled there from the first scale and the parallax");
+    } else if (status == "pair_fixes") {
+      warnings.push_back("too little road for the map's own scale in " + span +
+                         ": scaled there by the keyframe pairs' own road fixes");
     } else if (status == "held" && end - begin + 1 >= 10) {
       warnings.push_back("no usable road in " + span + ": the last scale was held there");
     }

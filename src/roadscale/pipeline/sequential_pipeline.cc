@@ -185,7 +185,7 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
     records_waiting_for_backend_.push_back(record);
     const Clock::time_point backend_start = Clock::now();
     const std::vector<MappedFrame> finished =
-        backend_->AddFrame(result, tracked.road_mask, tracked.image);
+        backend_->AddFrame(result, tracked.road_mask, tracked.image, record.timestamp);
     // The window holds at least two keyframes, so this frame is never among the finished.
     FrameRecord& waiting = records_waiting_for_backend_.back();
     waiting.scale_ms = MillisecondsSince(backend_start);
@@ -286,9 +286,10 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
                          : record.motion_status == MotionStatus::kPureRotation
                              ? PoseUpdate::kRotationOnly
                              : PoseUpdate::kConstantVelocity;
-    record.status = mapped.scale == MappedFrame::Scale::kRoad      ? "ok"
-                    : mapped.scale == MappedFrame::Scale::kCarried ? "held"
-                                                                   : "unscaled";
+    record.status = mapped.scale == MappedFrame::Scale::kRoad        ? "ok"
+                    : mapped.scale == MappedFrame::Scale::kCarried   ? "held"
+                    : mapped.scale == MappedFrame::Scale::kPairFixes ? "pair_fixes"
+                                                                     : "unscaled";
   }
   record.scale_diagnostics_csv = FormatMappedFrameCsv(mapped);
   last_written_world_from_cam_ = mapped.world_from_cam;
