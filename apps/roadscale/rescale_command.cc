@@ -47,6 +47,7 @@ struct RescaleArguments {
   double max_time_diff = 0.01;
   std::string detector = DetectorTypeName(TrajectoryRescalerOptions().tracker.detector.type);
   bool no_refine = false;
+  bool smooth_ratio = false;
   std::string config;
   std::string out;
 };
@@ -143,6 +144,7 @@ void RunRescale(const RescaleArguments& arguments) {
               "--max-time-diff", "must be a non-negative number of seconds");
   options.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.refine_motion = !arguments.no_refine;
+  options.step_own_ratio = !arguments.smooth_ratio;
   TrajectoryFormat format = TrajectoryFormat::kKitti;
   const Trajectory external = ReadExternalTrajectory(arguments, &format);
   if (external.size() == 0) ThrowFileError(arguments.trajectory, "no poses in the file");
@@ -310,6 +312,11 @@ void RegisterRescaleCommand(CLI::App& app) {
                    "(fast finds the faint road texture that the scale needs; see "
                    "docs/benchmarks.md)")
       ->capture_default_str();
+  command->add_flag("--smooth-ratio", arguments->smooth_ratio,
+                    "Give every step the filtered ratio of metres per input unit (Scale.filter), "
+                    "not its own road plane's: for an input whose step lengths are right up to a "
+                    "slowly drifting scale (default: off; a step's own ratio where it has a road "
+                    "plane, the filtered one where it has none)");
   command->add_flag("--no-refine", arguments->no_refine,
                     "Triangulate with the input's motion as it is, without refining it on the "
                     "tracks (default: refined; the output keeps the input's motion either way)");

@@ -48,6 +48,8 @@ void TrajectoryRescalerOptions::Check() const {
   CheckOption(
       std::isfinite(stationary_fraction) && stationary_fraction >= 0.0 && stationary_fraction < 1.0,
       "rescale.stationary_fraction", "must be in [0, 1)");
+  CheckOption(std::isfinite(max_speed) && max_speed >= 0.0, "rescale.max_speed",
+              "must be >= 0 m/s (0: no limit)");
 }
 
 const char* RescaleStatusName(RescaleStatus status) {
@@ -189,6 +191,7 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     prev_road_mask_ = segmentation.road_mask.clone();
     prev_image_ = frame.image;
     prev_pose_frame_index_ = frame.index;
+    prev_pose_timestamp_ = frame.timestamp;
     RescaledPose first;
     first.frame = first.prev_frame = frame.index;
     first.timestamp = frame.timestamp;
@@ -221,10 +224,12 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     return finished;
   }
 
-  RescaledPose step = MeasureStep(next_pose_, frame.image, segmentation.road_mask);
+  RescaledPose step = MeasureStep(next_pose_, frame.image, segmentation.road_mask,
+                                  frame.timestamp - prev_pose_timestamp_);
   step.frame = frame.index;
   step.prev_frame = prev_pose_frame_index_;
   prev_pose_frame_index_ = frame.index;
+  prev_pose_timestamp_ = frame.timestamp;
   step.timestamp = frame.timestamp;
   step.segmentation_ms = segmentation_ms;
   step.tracking_ms = step_tracking_ms_;
@@ -276,7 +281,7 @@ double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_m
 }
 
 RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
-                                             const cv::Mat& road_mask) {
+                                             const cv::Mat& road_mask, double seconds) {
   const auto start = std::chrono::steady_clock::now();
   RescaledPose step;
   step.pose = pose;
@@ -365,6 +370,13 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
     } else {
       step.raw_ratio = std::isfinite(step.alignment_ratio) ? step.alignment_ratio : tracks_ratio;
     }
+  }
+  if (std::isfinite(step.raw_ratio) && options_.max_speed > 0.0 && seconds > 0.0 &&
+      step.raw_ratio * step.external_length / seconds > options_.max_speed) {
+    step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
+    step.status = RescaleStatus::kHeld;
+    step.detail = "held: too fast";
+  } else if (std::isfinite(step.raw_ratio)) {
     ratio_ = options_.scale.use_filter ? ratio_filter_.Add(step.raw_ratio) : step.raw_ratio;
     has_ratio_ = true;
     step.status = RescaleStatus::kOk;
@@ -378,7 +390,9 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
 
 RescaledPose TrajectoryRescaler::Emit(RescaledPose step) {
   const Rigid3d b_from_a = StepMotion(external_, step.pose);
-  step.ratio = step.status == RescaleStatus::kUnscaled ? 1.0 : ratio_;
+  const bool own_ratio =
+      options_.step_own_ratio && step.status == RescaleStatus::kOk && std::isfinite(step.raw_ratio);
+  step.ratio = step.status == RescaleStatus::kUnscaled ? 1.0 : own_ratio ? step.raw_ratio : ratio_;
   step.metric_length =
       step.status == RescaleStatus::kStationary ? 0.0 : step.ratio * step.external_length;
   const Eigen::Vector3d translation =

@@ -86,6 +86,24 @@ struct TrajectoryRescalerOptions {
   // out of the scale estimate and ended: moving objects and drifting tracks.
   double max_sampson_error_px = 1.0;
 
+  // Each step with a road plane of its own takes its own ratio (metres per VO unit), and the
+  // filtered ratio (scale.filter) only serves the steps without one (held). The filter
+  // assumes a VO whose steps are right up to a slowly drifting scale, and then spreads that
+  // VO's step-to-step length errors over the output: real VOs' per-step lengths are not that
+  // good (LibVISO2-M's jump by tens of per cent from frame to frame). On the shared KITTI
+  // frames the step's own ratio took LibVISO2-M's 00 from 3.45 % to 3.06 % t_err (the floor
+  // of its own directions with the true lengths: 3.16 %) and its 07 from a length ratio of
+  // 1.036 to 0.990 (floor 0.987), Wang et al.'s 00 from 1.24 % to 1.18 % (docs/benchmarks.md,
+  // "Rescale on two peers' real trajectories"). false: every step the filtered ratio (the
+  // previous behaviour, `roadscale rescale --smooth-ratio`).
+  bool step_own_ratio = true;
+  // A step whose road plane makes the car faster than this (m/s, by its frames' timestamps;
+  // 0: no limit) has measured something else: it is held ("held: too fast"). On a rendered
+  // highway with every third frame a pose, one step's plane gave 340 times the ratio of the
+  // steps before it and the filter carried it over the 48 held steps after. 70 m/s (250
+  // km/h), as the keyframe back end's Mapping.first_scale_max_speed.
+  double max_speed = 70.0;
+
   // A step whose VO translation is shorter than this fraction of the median (non-zero) step
   // of the whole trajectory is stationary: its metric length stays 0.
   double stationary_fraction = 0.01;
@@ -118,7 +136,7 @@ struct RescaledPose {
 
   double external_length = 0.0;  // |translation| of the VO's b_from_a, in its units
   // This step's own ratio (metres per VO unit; NaN without a road plane), and the ratio
-  // applied (filtered or held).
+  // applied (its own, or the filtered one: TrajectoryRescalerOptions::step_own_ratio).
   double raw_ratio = 0.0;
   double ratio = 0.0;
   double metric_length = 0.0;  // ratio * external_length, 0 when stationary
@@ -193,7 +211,9 @@ class TrajectoryRescaler {
 
  private:
   // `image` and `road_mask`: frame b's grey image and road mask (empty: none).
-  RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask);
+  // `seconds`: from the previous pose's frame to this one's (TrajectoryRescalerOptions::max_speed).
+  RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask,
+                           double seconds);
   // The step's |t| / h from the road's pixels (NaN when it does not converge).
   double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, const Rigid3d& b_from_a,
                    double external_length) const;
@@ -214,6 +234,7 @@ class TrajectoryRescaler {
   cv::Mat prev_road_mask_;            // road mask of the last pose's frame
   cv::Mat prev_image_;                // grey image of the last pose's frame
   size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
+  double prev_pose_timestamp_ = 0.0;  // ... and its timestamp
   bool has_ratio_ = false;
   double ratio_ = 0.0;                // the last filtered ratio
   std::deque<RescaledPose> pending_;  // steps waiting for the first ratio

@@ -107,8 +107,9 @@ struct RescaleRun {
 // (whose poses are at `pose_frames`) and collects the output.
 RescaleRun Rescale(const FlatRoadRenderer& renderer, const Trajectory& gt,
                    const Trajectory& external, const std::vector<size_t>& pose_frames,
-                   const std::vector<bool>& blank_frames = {}) {
-  TrajectoryRescaler rescaler(renderer.camera(), external, pose_frames, Options());
+                   const std::vector<bool>& blank_frames = {},
+                   const TrajectoryRescalerOptions& options = Options()) {
+  TrajectoryRescaler rescaler(renderer.camera(), external, pose_frames, options);
   RescaleRun run;
   for (size_t position = rescaler.first_frame(); position <= rescaler.last_frame(); ++position) {
     Frame frame;
@@ -143,7 +144,11 @@ TEST(TrajectoryRescaler, RecoversTheMetricStepsOfADriftingTrajectory) {
   const Trajectory external = DistortTrajectoryScale(gt, ScaleDriftOptions());
 
   const RescaleRun run = Rescale(renderer, gt, external, AllFrames(gt.size()));
+  TrajectoryRescalerOptions smooth = Options();
+  smooth.step_own_ratio = false;
+  const RescaleRun filtered = Rescale(renderer, gt, external, AllFrames(gt.size()), {}, smooth);
   ASSERT_EQ(run.poses.size(), gt.size());
+  ASSERT_EQ(filtered.poses.size(), gt.size());
   EXPECT_EQ(run.poses[0].status, RescaleStatus::kFirst);
   EXPECT_TRUE(run.poses[0].world_from_cam.isApprox(Rigid3d::Identity()));
   double gt_length = 0.0;
@@ -157,8 +162,10 @@ TEST(TrajectoryRescaler, RecoversTheMetricStepsOfADriftingTrajectory) {
     EXPECT_GT(pose.num_pairs, 50) << k;
     // Measured: each step's own length within 3.9 % of the truth (a few dozen road points
     // on a noisy synthetic texture), the filtered one within 2.1 %, the path within 0.2 %.
+    // The output takes the step's own (step_own_ratio); --smooth-ratio the filtered one.
     EXPECT_NEAR(pose.raw_ratio * pose.external_length, speeds[k], 0.06 * speeds[k]) << k;
-    EXPECT_NEAR(pose.metric_length, speeds[k], 0.04 * speeds[k]) << k;
+    EXPECT_DOUBLE_EQ(pose.metric_length, pose.raw_ratio * pose.external_length) << k;
+    EXPECT_NEAR(filtered.poses[k].metric_length, speeds[k], 0.04 * speeds[k]) << k;
     // The output keeps the VO's rotation and direction.
     const Rigid3d step = run.poses[k - 1].world_from_cam.inverse() * pose.world_from_cam;
     const Rigid3d gt_step = gt.world_from_cam[k - 1].inverse() * gt.world_from_cam[k];
@@ -214,11 +221,31 @@ TEST(TrajectoryRescaler, StationaryStepsStayZeroAndRoadlessStepsHoldTheLastRatio
   for (size_t k : {9, 10, 11}) {  // 11: tracks from blank frame 10 cannot exist
     EXPECT_EQ(run.poses[k].status, RescaleStatus::kHeld) << k;
     EXPECT_FALSE(run.poses[k].detail.empty());
-    EXPECT_EQ(run.poses[k].ratio, run.poses[8].ratio) << k;
+    // Held steps keep the last filtered ratio (steps with a road plane take their own).
+    EXPECT_EQ(run.poses[k].ratio, run.poses[9].ratio) << k;
     // The held ratio follows the VO's (here exactly known) drift: 0.2 % a step.
     EXPECT_NEAR(run.poses[k].metric_length, 1.0, 0.04) << k;
   }
   EXPECT_EQ(run.poses[12].status, RescaleStatus::kOk);
+}
+
+// Steps of 1 m at 10 Hz: 10 m/s. A road plane that makes the car faster than max_speed is
+// not taken: below 10 m/s every step is held as too fast; at the default none is.
+TEST(TrajectoryRescaler, AStepFasterThanTheMaxSpeedIsHeld) {
+  const FlatRoadRenderer renderer;
+  const Trajectory gt = Drive({0, 1, 1, 1, 1, 1});
+  const Trajectory external = DistortTrajectoryScale(gt, ScaleDriftOptions());
+  TrajectoryRescalerOptions slow = Options();
+  slow.max_speed = 5.0;
+  const RescaleRun held = Rescale(renderer, gt, external, AllFrames(gt.size()), {}, slow);
+  const RescaleRun ok = Rescale(renderer, gt, external, AllFrames(gt.size()));
+  ASSERT_EQ(held.poses.size(), gt.size());
+  ASSERT_EQ(ok.poses.size(), gt.size());
+  for (size_t k = 1; k < gt.size(); ++k) {
+    EXPECT_EQ(ok.poses[k].status, RescaleStatus::kOk) << k;
+    EXPECT_NE(held.poses[k].status, RescaleStatus::kOk) << k;
+  }
+  EXPECT_EQ(held.poses[1].detail, "held: too fast");
 }
 
 TEST(TrajectoryRescaler, StepsBeforeTheFirstRoadPlaneTakeItsRatio) {
