@@ -200,6 +200,33 @@ TEST(TrajectoryRescaler, KeyframesAreTrackedThroughTheFramesBetweenThem) {
   EXPECT_NEAR(length / gt_length, 1.0, 0.01);
 }
 
+// As ORB-SLAM3 writes KeyFrameTrajectory.txt: keyframes at irregular frames, with timestamps,
+// starting after the sequence's first frame and ending before its last.
+TEST(TrajectoryRescaler, KeyframesThatStartLateAndEndEarlyAreRescaledOverTheirOwnFrames) {
+  const FlatRoadRenderer renderer;
+  const Trajectory gt = Drive(std::vector<double>(20, 0.8));
+  const Trajectory drifted = DistortTrajectoryScale(gt, {});
+  Trajectory keyframes;
+  for (size_t frame : {4, 5, 7, 10, 11, 14}) {
+    keyframes.timestamps.push_back(drifted.timestamps[frame]);
+    keyframes.world_from_cam.push_back(drifted.world_from_cam[frame]);
+  }
+  const std::vector<size_t> pose_frames =
+      AssociatePosesWithFrames(keyframes, "KeyFrameTrajectory.txt", gt.timestamps);
+  EXPECT_EQ(pose_frames, (std::vector<size_t>{4, 5, 7, 10, 11, 14}));
+  const RescaleRun run = Rescale(renderer, gt, keyframes, pose_frames);
+  ASSERT_EQ(run.poses.size(), pose_frames.size());
+  EXPECT_EQ(run.poses[0].status, RescaleStatus::kFirst);
+  EXPECT_EQ(run.poses[0].frame, 4u);
+  EXPECT_TRUE(run.poses[0].world_from_cam.isApprox(keyframes.world_from_cam[0]));
+  for (size_t k = 1; k < run.poses.size(); ++k) {
+    EXPECT_EQ(run.poses[k].frame, pose_frames[k]);
+    EXPECT_EQ(run.poses[k].status, RescaleStatus::kOk) << k;
+    const double true_length = StepLength(gt, pose_frames[k - 1], pose_frames[k]);
+    EXPECT_NEAR(run.poses[k].metric_length, true_length, 0.05 * true_length) << k;
+  }
+}
+
 TEST(TrajectoryRescaler, StationaryStepsStayZeroAndRoadlessStepsHoldTheLastRatio) {
   const FlatRoadRenderer renderer;
   // Stopped for frames 4-6; frames 9-10 see a road without texture.
