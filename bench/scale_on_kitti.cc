@@ -3,10 +3,17 @@
 //
 //   build/bench/roadscale_scale_on_kitti [--frames 200] [--synthetic-pairs 200] [--csv FILE]
 //       [--sequence SEQ_DIR --poses POSES_TXT] [--h0 1.65] [--min-parallax-deg D]
-//       [--only TEXT] [--diagnose 1]
+//       [--only TEXT] [--diagnose 1] [--direction truth|images] [--direction-pitch-deg D]
 //
 // --min-parallax-deg changes triangulation.min_parallax_deg in every configuration.
 // --only TEXT runs only the configurations whose name contains TEXT.
+// --direction images: each pair's rotation and translation direction refined on the pair's own
+// tracks (5 degrees of freedom, Huber on the Sampson error, from the ground truth's motion):
+// the images' own geometry, as a frontend would give it, with the true step length still
+// judging the scale. Prints the median offset of the images' direction to the truth's.
+// --direction-pitch-deg D turns each pair's translation direction by D degrees about the
+// camera's x axis (positive: towards the camera's -y, up) after the above: how much a
+// direction error in pitch moves the road scale.
 // --diagnose 1 (rendered sequences with depth/, semantic/ and road_planes.txt): for each
 // "semantic" configuration, the KLT error of the road tracks against the true flow (from the
 // rendered depth and the true motion), their triangulated against their rendered depth, and
@@ -56,6 +63,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "roadscale/frontend/sampson_refinement.h"
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
@@ -138,9 +146,39 @@ cv::Mat CorridorMask(const PinholeCamera& camera, double camera_height) {
   return mask;
 }
 
+// Where each KITTI pair's rotation and translation direction come from.
+struct PairMotion {
+  bool from_images = false;  // refined on the pair's tracks, else the ground truth's
+  double pitch_deg = 0.0;    // then turned by this about the camera's x axis
+};
+
+// The pair's motion refined on its tracks (normalised coordinates); returns the change of the
+// translation direction's pitch and yaw, degrees.
+Eigen::Vector2d RefineOnTracks(const PinholeCamera& camera, PairData* pair) {
+  std::vector<Eigen::Vector2d> prev, cur;
+  for (size_t i = 0; i < pair->prev_pixels.size(); ++i) {
+    prev.push_back(camera.Unproject(pair->prev_pixels[i]).hnormalized());
+    cur.push_back(camera.Unproject(pair->cur_pixels[i]).hnormalized());
+  }
+  const Eigen::Vector3d truth = pair->cur_from_prev.translation();
+  const SampsonRefinementResult refined = RefineRelativePoseSampson(
+      pair->cur_from_prev.linear(), truth, prev, cur, camera.fx, SampsonRefinementOptions{});
+  pair->cur_from_prev = MakeRigid3d(refined.rotation, refined.direction);
+  const auto degrees = [](double radians) { return radians * 180.0 / M_PI; };
+  return {degrees(std::asin(refined.direction.y()) - std::asin(truth.y())),
+          degrees(std::asin(refined.direction.x()) - std::asin(truth.x()))};
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return std::nan("");
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::string& poses,
                                  int num_frames, double camera_height,
-                                 const std::string& segmentation_model, PinholeCamera* camera) {
+                                 const std::string& segmentation_model, const PairMotion& motion,
+                                 PinholeCamera* camera) {
   const Trajectory truth = ReadKittiTrajectory(poses);
   const std::string image_dir = sequence_dir + "/image_0";
   const std::string semantic_dir = sequence_dir + "/semantic";
@@ -167,6 +205,7 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
     segmenter = MakeSegmenter(segmentation);
   }
   std::vector<PairData> pairs;
+  std::vector<double> pitch_offsets, yaw_offsets;
   cv::Mat prev_image;
   for (int frame = 0; frame < num_frames && frame < static_cast<int>(truth.size()); ++frame) {
     char name[32];
@@ -217,6 +256,16 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
       pair.prev_pixels.push_back(prev);
       pair.cur_pixels.push_back(cur);
     }
+    if (motion.from_images) {
+      const Eigen::Vector2d offset = RefineOnTracks(*camera, &pair);
+      pitch_offsets.push_back(offset.x());
+      yaw_offsets.push_back(offset.y());
+    }
+    if (motion.pitch_deg != 0.0) {
+      const Eigen::AngleAxisd turn(motion.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitX());
+      pair.cur_from_prev =
+          MakeRigid3d(pair.cur_from_prev.linear(), turn * pair.cur_from_prev.translation());
+    }
     if (has_depth) {
       char previous[32];
       std::snprintf(previous, sizeof(previous), "/%06d.png", frame - 1);
@@ -236,6 +285,12 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
   }
   const cv::Mat corridor = CorridorMask(*camera, camera_height);
   for (PairData& pair : pairs) pair.mask = corridor;
+  if (motion.from_images) {
+    std::printf(
+        "\nThe images' translation direction against the ground truth's, median over %zu "
+        "pairs: pitch %+.3f deg, yaw %+.3f deg\n",
+        pitch_offsets.size(), Median(pitch_offsets), Median(yaw_offsets));
+  }
   return pairs;
 }
 
@@ -530,6 +585,7 @@ int Main(int argc, char** argv) {
   double min_parallax_deg = TriangulationOptions().min_parallax_deg;
   std::string segmentation_model;
   bool diagnose = false;
+  PairMotion motion;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -556,11 +612,19 @@ int Main(int argc, char** argv) {
       diagnose = value == "1";
     } else if (flag == "--segmentation-model") {
       segmentation_model = value;
+    } else if (flag == "--direction") {
+      if (value != "truth" && value != "images") {
+        throw Error("--direction must be truth or images (found " + value + ")");
+      }
+      motion.from_images = value == "images";
+    } else if (flag == "--direction-pitch-deg") {
+      motion.pitch_deg = std::stod(value);
     } else {
       throw Error("unknown option " + flag +
                   " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
                   "--poses FILE, --h0 METRES, --min-parallax-deg D, --segmentation-model YAML, "
-                  "--only TEXT or --diagnose 1)");
+                  "--only TEXT, --diagnose 1, --direction truth|images or "
+                  "--direction-pitch-deg D)");
     }
   }
   std::ofstream csv;
@@ -596,13 +660,15 @@ int Main(int argc, char** argv) {
     PinholeCamera camera;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<PairData> pairs =
-        KittiPairs(sequence_dir, poses, frames, camera_height, segmentation_model, &camera);
+        KittiPairs(sequence_dir, poses, frames, camera_height, segmentation_model, motion, &camera);
     std::printf("\nKLT tracking of %d frames of %s: %.1f s\n", frames, sequence_dir.c_str(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    PrintTable(own_sequence ? sequence_dir + ", ground-truth motion direction"
-                            : "KITTI 00, ground-truth motion direction",
-               pairs, camera, configurations, 0, csv_out, own_sequence ? "sequence" : "kitti",
-               camera_height);
+    const std::string direction =
+        std::string(motion.from_images ? ", the images' motion direction"
+                                       : ", ground-truth motion direction") +
+        (motion.pitch_deg != 0.0 ? " turned in pitch" : "");
+    PrintTable((own_sequence ? sequence_dir : std::string("KITTI 00")) + direction, pairs, camera,
+               configurations, 0, csv_out, own_sequence ? "sequence" : "kitti", camera_height);
     // Pairs 1-13 of KITTI 00: the ground truth's constant 0.860 m a frame while the car
     // accelerates.
     for (const Configuration& configuration : configurations) {
