@@ -125,11 +125,10 @@ bool RunSequentially(FrameSource& source, CarriedFrontend& frontend, RoadMaskCom
 
 bool RunThreaded(FrameSource& source, CarriedFrontend& frontend, RoadMaskCompleter& roads,
                  SequentialPipeline& pipeline, SegmentationService& service,
-                 const PipelineOptions& options, const RunPipelineOptions& run_options,
-                 const std::atomic<bool>* stop) {
-  BoundedQueue<SegmentedFrame> loaded(run_options.queue_capacity);
+                 const PipelineOptions& options, const std::atomic<bool>* stop) {
+  BoundedQueue<SegmentedFrame> loaded(kStageQueueCapacity);
   // Room for the frames the frontend runs ahead while the scale stage waits for a network.
-  BoundedQueue<CarriedFrame> tracked(run_options.queue_capacity +
+  BoundedQueue<CarriedFrame> tracked(kStageQueueCapacity +
                                      options.segmentation_schedule.latency_frames);
   std::atomic<bool> interrupted{false};
 
@@ -173,7 +172,7 @@ bool RunWithCarriedMasks(FrameSource& source, const std::vector<Segmenter*>& seg
   CarriedFrontend frontend(pipeline, service, options, source.camera().camera);
   RoadMaskCompleter roads(service);
   return run_options.threaded
-             ? RunThreaded(source, frontend, roads, pipeline, service, options, run_options, stop)
+             ? RunThreaded(source, frontend, roads, pipeline, service, options, stop)
              : RunSequentially(source, frontend, roads, pipeline, stop);
 }
 

@@ -55,10 +55,9 @@ bool RunSequentially(FrameSource& source, Segmenter& segmenter, SequentialPipeli
 // Stage 1 on one thread per segmenter, stage 2 on its own thread, stage 3 on the calling
 // thread. Returns whether the run was interrupted.
 bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
-                 SequentialPipeline& pipeline, const RunPipelineOptions& options,
-                 const std::atomic<bool>* stop) {
-  BoundedQueue<SegmentedFrame> segmented(options.queue_capacity);
-  BoundedQueue<TrackedFrame> tracked(options.queue_capacity);
+                 SequentialPipeline& pipeline, const std::atomic<bool>* stop) {
+  BoundedQueue<SegmentedFrame> segmented(kStageQueueCapacity);
+  BoundedQueue<TrackedFrame> tracked(kStageQueueCapacity);
   std::atomic<bool> interrupted{false};
 
   // Stage 1: each worker takes the next frame from the source (in turn), segments it with
@@ -141,7 +140,6 @@ bool RunThreaded(FrameSource& source, const std::vector<Segmenter*>& segmenters,
 }  // namespace
 
 void RunPipelineOptions::Check() const {
-  CheckOption(queue_capacity >= 1, "queue_capacity", "must be >= 1");
   CheckOption(opencv_threads >= 0, "opencv_threads", "must be >= 0 (0: leave OpenCV's)");
 }
 
@@ -194,7 +192,7 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
         RunWithCarriedMasks(source, segmenters, pipeline, options, run_options, stop);
   } else {
     result.interrupted = run_options.threaded
-                             ? RunThreaded(source, segmenters, pipeline, run_options, stop)
+                             ? RunThreaded(source, segmenters, pipeline, stop)
                              : RunSequentially(source, *segmenters.front(), pipeline, stop);
   }
   pipeline.Finish();

@@ -13,6 +13,10 @@
 
 namespace roadscale {
 
+// Frames a queue between two stages holds; bounds the memory to a few images whatever the
+// sequence's length. 2 lets a stage run ahead by one frame while the next is handed over.
+inline constexpr size_t kStageQueueCapacity = 2;
+
 struct RunPipelineOptions {
   // Run the three stages (1: image loading + segmentation, 2: frontend, 3: scale + pose +
   // writing) on their own threads (stage 1 on one per segmenter), connected by bounded queues, so
@@ -20,9 +24,6 @@ struct RunPipelineOptions {
   // estimation"). Each stage sees the frames in order and owns its state, so the output does not
   // depend on thread timing: the same input gives byte-identical poses with or without threads.
   bool threaded = true;
-  // Frames a queue between two stages holds; bounds the memory to a few images whatever the
-  // sequence's length. 2 lets a stage run ahead by one frame while the next is handed over.
-  size_t queue_capacity = 2;
   // OpenCV's thread count (a process-wide setting) during the run; 0 leaves it. Changing it
   // while another thread runs an OpenCV parallel loop crashes OpenCV, so a run with a network
   // sets it here, before the threads start, to the network's dnn_threads: the segmenter then

@@ -39,10 +39,6 @@ void TrajectoryRescalerOptions::Check() const {
   tracker.Check();
   refinement.Check();
   alignment.Check();
-  CheckOption(std::isfinite(max_refinement_rotation_deg) && max_refinement_rotation_deg >= 0.0,
-              "rescale.max_refinement_rotation_deg", "must be a non-negative number of degrees");
-  CheckOption(std::isfinite(max_refinement_direction_deg) && max_refinement_direction_deg >= 0.0,
-              "rescale.max_refinement_direction_deg", "must be a non-negative number of degrees");
   CheckOption(std::isfinite(max_sampson_error_px) && max_sampson_error_px > 0.0,
               "rescale.max_sampson_error_px", "must be a positive number of pixels");
   CheckOption(
@@ -204,17 +200,15 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     return finished;
   }
 
-  // The VO's rotation of this step, spread evenly over its frames, predicts each frame's.
-  Eigen::Matrix3d prediction = Eigen::Matrix3d::Identity();
-  if (options_.predict_with_rotation) {
-    const Eigen::AngleAxisd step_rotation(
-        NearestRotation(StepMotion(external_, next_pose_).linear()));
-    const double frames =
-        static_cast<double>(pose_frames_[next_pose_] - pose_frames_[next_pose_ - 1]);
-    const Eigen::Matrix3d per_frame =
-        Eigen::AngleAxisd(step_rotation.angle() / frames, step_rotation.axis()).toRotationMatrix();
-    prediction = camera_.K() * per_frame * camera_.K().inverse();
-  }
+  // KLT starts in each frame where the VO's rotation of this step, spread evenly over its
+  // frames, moves each point.
+  const Eigen::AngleAxisd step_rotation(
+      NearestRotation(StepMotion(external_, next_pose_).linear()));
+  const double frames =
+      static_cast<double>(pose_frames_[next_pose_] - pose_frames_[next_pose_ - 1]);
+  const Eigen::Matrix3d per_frame =
+      Eigen::AngleAxisd(step_rotation.angle() / frames, step_rotation.axis()).toRotationMatrix();
+  const Eigen::Matrix3d prediction = camera_.K() * per_frame * camera_.K().inverse();
   tracker_.Track(static_cast<int>(position), frame.image,
                  pose_frame ? segmentation.dynamic_mask : no_mask, prediction);
   step_tracking_ms_ += tracker_.stats().pyramid_ms + tracker_.stats().tracking_ms;
@@ -233,7 +227,11 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   step.timestamp = frame.timestamp;
   step.segmentation_ms = segmentation_ms;
   step.tracking_ms = step_tracking_ms_;
-  tracker_.Detect(segmentation.static_mask, options_.detect_every_pose);
+  // New features (topping up the grid cells) at every pose, not only when the tracks run low:
+  // the road right in front of the car leaves the image within a few frames, and the scale
+  // needs its points in every step.
+  constexpr bool kDetectEveryPose = true;
+  tracker_.Detect(segmentation.static_mask, kDetectEveryPose);
   step.detection_ms = tracker_.stats().detection_ms;
   prev_road_mask_ = segmentation.road_mask.clone();
   prev_image_ = frame.image;
@@ -320,6 +318,10 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   }
   // Five unknowns: fewer tracks than a handful fit anything.
   constexpr size_t kMinRefinementTracks = 20;
+  // A refinement that turns the rotation or the direction further than this from the VO's is
+  // not used (a false minimum, or too few good tracks): the VO's motion is.
+  constexpr double kMaxRefinementRotationDeg = 1.0;
+  constexpr double kMaxRefinementDirectionDeg = 5.0;
   if (options_.refine_motion && ids.size() >= kMinRefinementTracks) {
     const SampsonRefinementResult refined = RefineRelativePoseSampson(
         rotation, direction, prev_normalized, cur_normalized, camera_.fx, options_.refinement);
@@ -328,8 +330,8 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
     step.refinement_direction_deg =
         std::acos(std::clamp(refined.direction.normalized().dot(direction), -1.0, 1.0)) *
         kDegreesPerRadian;
-    if (step.refinement_rotation_deg <= options_.max_refinement_rotation_deg &&
-        step.refinement_direction_deg <= options_.max_refinement_direction_deg) {
+    if (step.refinement_rotation_deg <= kMaxRefinementRotationDeg &&
+        step.refinement_direction_deg <= kMaxRefinementDirectionDeg) {
       rotation = refined.rotation;
       direction = refined.direction.normalized();
       step.refined = true;

@@ -52,14 +52,6 @@ struct TrajectoryRescalerOptions {
     options.detector.type = DetectorType::kFast;
     return options;
   }();
-  // Detect new features (topping up the grid cells) at every pose, not only when the tracks
-  // run low: the road right in front of the car leaves the image within a few frames, and
-  // the scale needs its points in every step.
-  bool detect_every_pose = true;
-  // Start KLT in each frame between two poses where the VO's rotation (spread evenly over
-  // those frames) moves each point.
-  bool predict_with_rotation = true;
-
   // Refine the VO's rotation and direction on this step's tracks (5 degrees of freedom,
   // robust Sampson error) before triangulating. Another program's relative motion is rarely
   // as precise as the images' own geometry: on KITTI the ground truth's direction moves by
@@ -78,10 +70,6 @@ struct TrajectoryRescalerOptions {
     options.loss = SampsonRefinementOptions::Loss::kCauchy;  // the tracks still hold outliers
     return options;
   }();
-  // A refinement that turns the rotation or the direction further than this (degrees) from
-  // the VO's is not used (a false minimum, or too few good tracks): the VO's motion is.
-  double max_refinement_rotation_deg = 1.0;
-  double max_refinement_direction_deg = 5.0;
   // Tracks whose Sampson error under the (refined) motion exceeds this many pixels are left
   // out of the scale estimate and ended: moving objects and drifting tracks.
   double max_sampson_error_px = 1.0;
