@@ -3,7 +3,8 @@
 //
 //   build/bench/roadscale_scale_on_kitti [--frames 200] [--synthetic-pairs 200] [--csv FILE]
 //       [--sequence SEQ_DIR --poses POSES_TXT] [--h0 1.65] [--min-parallax-deg D]
-//       [--only TEXT] [--diagnose 1] [--direction truth|images] [--direction-pitch-deg D]
+//       [--only TEXT] [--diagnose 1] [--alignment free|tangent] [--direction truth|images]
+//       [--direction-pitch-deg D]
 //
 // --min-parallax-deg changes triangulation.min_parallax_deg in every configuration.
 // --only TEXT runs only the configurations whose name contains TEXT.
@@ -11,6 +12,12 @@
 // tracks (5 degrees of freedom, Huber on the Sampson error, from the ground truth's motion):
 // the images' own geometry, as a frontend would give it, with the true step length still
 // judging the scale. Prints the median offset of the images' direction to the truth's.
+// --alignment free|tangent (KITTI-layout sequences with a road mask): also each pair's road
+// plane from the road's pixels (AlignRoadPlaneOrSearchAll, the keyframe back end's road
+// alignment, default options; tangent: RoadPlaneAlignmentOptions::tangent_to_travel) on the
+// same motion and the two frames' semantic masks, told the true |t| / h0 as
+// the map would tell it; printed as median and mean error of h0 / h against the true step,
+// and written to --csv as configuration "road alignment, semantic".
 // --direction-pitch-deg D turns each pair's translation direction by D degrees about the
 // camera's x axis (positive: towards the camera's -y, up) after the above: how much a
 // direction error in pitch moves the road scale.
@@ -67,6 +74,8 @@
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/scale/road_model_check.h"
+#include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
 #include "roadscale/scale/synthetic_road_scene.h"
 #include "roadscale/segmentation/make_segmenter.h"
@@ -89,6 +98,7 @@ struct PairData {
   std::vector<double> true_depths;
   std::vector<bool> on_road;
   std::optional<Plane> true_plane;
+  cv::Mat prev_image, cur_image;  // KITTI-layout sequences only
 };
 
 enum class MaskKind { kNone, kCorridor, kSemantic };
@@ -167,12 +177,6 @@ Eigen::Vector2d RefineOnTracks(const PinholeCamera& camera, PairData* pair) {
   const auto degrees = [](double radians) { return radians * 180.0 / M_PI; };
   return {degrees(std::asin(refined.direction.y()) - std::asin(truth.y())),
           degrees(std::asin(refined.direction.x()) - std::asin(truth.x()))};
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return std::nan("");
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
 }
 
 std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::string& poses,
@@ -280,6 +284,8 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
       const auto plane = true_planes.find(frame - 1);
       if (plane != true_planes.end()) pair.true_plane = plane->second;
     }
+    pair.prev_image = prev_image;
+    pair.cur_image = image;
     pairs.push_back(std::move(pair));
     prev_image = image;
   }
@@ -289,7 +295,7 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
     std::printf(
         "\nThe images' translation direction against the ground truth's, median over %zu "
         "pairs: pitch %+.3f deg, yaw %+.3f deg\n",
-        pitch_offsets.size(), Median(pitch_offsets), Median(yaw_offsets));
+        pitch_offsets.size(), Percentile(pitch_offsets, 0.5), Percentile(yaw_offsets, 0.5));
   }
   return pairs;
 }
@@ -387,6 +393,40 @@ void PrintRow(const std::string& name, const Summary& summary) {
               100 * Mean(summary.raw_errors), 100 * Percentile(filtered_abs, 0.5),
               100 * Percentile(filtered_abs, 0.9), 100 * Mean(summary.filtered_errors),
               summary.estimated_length / summary.true_length, summary.held, Mean(summary.ms));
+}
+
+// The road alignment of each pair whose two frames have a semantic road mask (the next pair's
+// previous mask is this pair's current one), against the true step.
+void PrintAlignment(const std::vector<PairData>& pairs, const PinholeCamera& camera,
+                    const RoadPlaneAlignmentOptions& options, int first_counted, std::ofstream* csv,
+                    const std::string& data_name, double camera_height) {
+  std::vector<double> errors;
+  int attempted = 0;
+  for (size_t k = static_cast<size_t>(first_counted); k + 1 < pairs.size(); ++k) {
+    const PairData& pair = pairs[k];
+    const cv::Mat& cur_mask = pairs[k + 1].semantic_mask;
+    if (pair.semantic_mask.empty() || cur_mask.empty() || pair.true_step <= 0.0) continue;
+    ++attempted;
+    const std::optional<Eigen::Vector3d> normal =
+        ExpectedRoadNormal(pair.cur_from_prev, RoadModelCheckOptions{});
+    const RoadPlaneAlignment alignment = AlignRoadPlaneOrSearchAll(
+        pair.prev_image, pair.cur_image, pair.semantic_mask, cur_mask, camera, pair.cur_from_prev,
+        normal.value_or(Eigen::Vector3d::UnitY()), pair.true_step / camera_height, options);
+    const double scale = alignment.ok ? camera_height / alignment.plane.height : std::nan("");
+    if (alignment.ok) errors.push_back(scale / pair.true_step - 1.0);
+    if (csv != nullptr) {
+      *csv << data_name << ",road alignment, semantic," << k + 1 << ','
+           << (alignment.ok ? "ok" : "no plane") << ',' << pair.true_step << ',' << scale << ','
+           << scale << ",,,,,,," << alignment.plane.height << ",,,\n";
+    }
+  }
+  std::vector<double> absolute;
+  for (double error : errors) absolute.push_back(std::abs(error));
+  std::printf(
+      "\nRoad alignment, semantic (pairs from %d): %zu of %d pairs aligned, median |error| "
+      "%.2f %%, median error %+.2f %%, mean error %+.2f %%\n",
+      first_counted + 1, errors.size(), attempted, 100.0 * Percentile(absolute, 0.5),
+      100.0 * Percentile(errors, 0.5), 100.0 * Mean(errors));
 }
 
 void PrintTable(const std::string& title, const std::vector<PairData>& pairs,
@@ -585,6 +625,7 @@ int Main(int argc, char** argv) {
   double min_parallax_deg = TriangulationOptions().min_parallax_deg;
   std::string segmentation_model;
   bool diagnose = false;
+  std::optional<RoadPlaneAlignmentOptions> alignment;
   PairMotion motion;
   std::string only;
   for (int i = 1; i < argc; ++i) {
@@ -612,6 +653,12 @@ int Main(int argc, char** argv) {
       diagnose = value == "1";
     } else if (flag == "--segmentation-model") {
       segmentation_model = value;
+    } else if (flag == "--alignment") {
+      if (value != "free" && value != "tangent") {
+        throw Error("--alignment must be free or tangent (found " + value + ")");
+      }
+      alignment.emplace();
+      alignment->tangent_to_travel = value == "tangent";
     } else if (flag == "--direction") {
       if (value != "truth" && value != "images") {
         throw Error("--direction must be truth or images (found " + value + ")");
@@ -620,11 +667,12 @@ int Main(int argc, char** argv) {
     } else if (flag == "--direction-pitch-deg") {
       motion.pitch_deg = std::stod(value);
     } else {
-      throw Error("unknown option " + flag +
-                  " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
-                  "--poses FILE, --h0 METRES, --min-parallax-deg D, --segmentation-model YAML, "
-                  "--only TEXT, --diagnose 1, --direction truth|images or "
-                  "--direction-pitch-deg D)");
+      throw Error(
+          "unknown option " + flag +
+          " (expected --frames N, --synthetic-pairs N, --csv FILE, --sequence DIR, "
+          "--poses FILE, --h0 METRES, --min-parallax-deg D, --segmentation-model YAML, "
+          "--only TEXT, --diagnose 1, --alignment free|tangent, --direction truth|images or "
+          "--direction-pitch-deg D)");
     }
   }
   std::ofstream csv;
@@ -675,6 +723,11 @@ int Main(int argc, char** argv) {
       if (diagnose && configuration.mask == MaskKind::kSemantic) {
         Diagnose(pairs, camera, configuration, camera_height);
       }
+    }
+    const std::string data_name = own_sequence ? "sequence" : "kitti";
+    if (alignment) PrintAlignment(pairs, camera, *alignment, 0, csv_out, data_name, camera_height);
+    if (alignment && !own_sequence) {
+      PrintAlignment(pairs, camera, *alignment, 13, nullptr, data_name, camera_height);
     }
     if (!own_sequence) {
       PrintTable("KITTI 00 without the ground truth's constant-speed pairs 1-13", pairs, camera,

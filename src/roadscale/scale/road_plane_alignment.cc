@@ -257,9 +257,25 @@ struct LevelFit {
   int iterations = 0;
 };
 
+// The directions the fit may move in with the normal perpendicular to the translation
+// (columns: two for m, the grey offset).
+Eigen::Matrix<double, 4, 3> TangentParameters(const WarpState& state) {
+  const Eigen::Vector3d u = state.translation_direction;
+  const Eigen::Vector3d along_normal = (state.m - state.m.dot(u) * u).normalized();
+  Eigen::Matrix<double, 4, 3> free = Eigen::Matrix<double, 4, 3>::Zero();
+  free.block<3, 1>(0, 0) = along_normal;
+  free.block<3, 1>(0, 1) = u.cross(along_normal);
+  free(3, 2) = 1.0;
+  return free;
+}
+
 // Gauss-Newton with the robust loss's weights at one level on m and the grey offset.
 LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
                   const RoadPlaneAlignmentOptions& options, WarpState* state) {
+  if (options.tangent_to_travel) {
+    state->m -= state->m.dot(state->translation_direction) * state->translation_direction;
+  }
+  const Eigen::Matrix<double, 4, 3> tangent = TangentParameters(*state);
   const Eigen::Vector3d direction = state->Direction();
   const GreyLoss loss(options);
   LevelFit fit;
@@ -290,8 +306,16 @@ LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
     if (used < 4) return fit;
     ++fit.iterations;
     // A little Levenberg damping keeps a poorly seen direction of m from running off.
-    H.diagonal() *= 1.0 + 1e-4;
-    const Eigen::Vector4d step = H.ldlt().solve(-g);
+    constexpr double kDamping = 1.0 + 1e-4;
+    Eigen::Vector4d step;
+    if (options.tangent_to_travel) {
+      Eigen::Matrix3d reduced = tangent.transpose() * H * tangent;
+      reduced.diagonal() *= kDamping;
+      step = tangent * reduced.ldlt().solve(-(tangent.transpose() * g));
+    } else {
+      H.diagonal() *= kDamping;
+      step = H.ldlt().solve(-g);
+    }
     if (!step.allFinite()) return fit;
     state->m += step.head<3>();
     state->offset += step(3);

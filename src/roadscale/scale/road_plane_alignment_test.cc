@@ -191,6 +191,43 @@ TEST(RoadPlaneAlignment, SamplesNoRoadBeyondItsLimits) {
   }
 }
 
+// The car drives on the road, so the road's normal is perpendicular to the travel; only its
+// roll about the direction of travel is left to the road's pixels.
+TEST(RoadPlaneAlignment, KeepsTheNormalPerpendicularToTheTravelWhenAsked) {
+  const RenderedPair pair = RenderPair("urban", 10, 12);
+  RoadPlaneAlignmentOptions options;
+  options.tangent_to_travel = true;
+  const RoadPlaneAlignment fit = Align(pair, 0.0, options);
+  ASSERT_TRUE(fit.ok);
+  const Eigen::Vector3d travel_in_prev =
+      -(pair.cur_from_prev.linear().transpose() * pair.cur_from_prev.translation()).normalized();
+  EXPECT_NEAR(fit.plane.normal.dot(travel_in_prev), 0.0, 1e-9);
+  EXPECT_NEAR(fit.plane.height / TrueHeightPerBaseline(pair), 1.0, 0.01);
+}
+
+// A free normal is seen only through the road 6-33 m ahead and extrapolated to the camera:
+// each pair's error in pitch becomes an error in height. Held perpendicular to the travel,
+// the height is measured where the car is.
+TEST(RoadPlaneAlignment, MeasuresTheHeightCloserWithTheNormalTangentToTheTravel) {
+  RoadPlaneAlignmentOptions tangent;
+  tangent.tangent_to_travel = true;
+  double free_error = 0.0, tangent_error = 0.0;
+  int pairs = 0;
+  for (int prev = 40; prev < 60; prev += 2) {
+    const RenderedPair pair = RenderPair("urban", prev, prev + 1);
+    const double truth = TrueHeightPerBaseline(pair);
+    const RoadPlaneAlignment free_fit = Align(pair, 0.0);
+    const RoadPlaneAlignment tangent_fit = Align(pair, 0.0, tangent);
+    ASSERT_TRUE(free_fit.ok && tangent_fit.ok) << prev;
+    free_error += std::abs(free_fit.plane.height / truth - 1.0);
+    tangent_error += std::abs(tangent_fit.plane.height / truth - 1.0);
+    ++pairs;
+  }
+  // Measured: mean |error| 0.69 % free, 0.21 % tangent.
+  EXPECT_LT(tangent_error, 0.5 * free_error);
+  EXPECT_LT(tangent_error / pairs, 0.004);
+}
+
 TEST(RoadPlaneAlignment, FindsNoPlaneWithoutRoadTexture) {
   RenderedPair pair = RenderPair("urban", 10, 12);
   pair.prev_image.setTo(128);
