@@ -361,6 +361,8 @@ void RoadPlaneAlignmentOptions::Check() const {
   CheckOption(mask_erosion_px >= 0, "road_alignment.mask_erosion_px", "must be >= 0 pixels");
   CheckOption(std::isfinite(max_lateral_offset) && max_lateral_offset >= 0.0,
               "road_alignment.max_lateral_offset", "must be >= 0 camera heights (0: no limit)");
+  CheckOption(std::isfinite(max_pitch_to_travel_deg) && max_pitch_to_travel_deg >= 0.0,
+              "road_alignment.max_pitch_to_travel_deg", "must be >= 0 degrees (0: no limit)");
   CheckOption(std::isfinite(max_distance) && max_distance >= 0.0, "road_alignment.max_distance",
               "must be >= 0 camera heights (0: no limit)");
 }
@@ -432,7 +434,10 @@ RoadPlaneAlignment AlignOnLevels(const std::vector<Level>& levels, const Rigid3d
   const double change_deg =
       std::acos(std::clamp(result.plane.normal.dot(normal_guess.normalized()), -1.0, 1.0)) * 180.0 /
       M_PI;
-  result.ok = converged && result.plane.height > 0.0 && change_deg <= kMaxNormalChangeDeg;
+  result.pitch_to_travel_deg = std::asin(std::min(1.0, std::abs(n_cur.dot(u)))) * 180.0 / M_PI;
+  result.ok = converged && result.plane.height > 0.0 && change_deg <= kMaxNormalChangeDeg &&
+              (options.max_pitch_to_travel_deg <= 0.0 ||
+               result.pitch_to_travel_deg <= options.max_pitch_to_travel_deg);
   return result;
 }
 

@@ -228,6 +228,24 @@ TEST(RoadPlaneAlignment, MeasuresTheHeightCloserWithTheNormalTangentToTheTravel)
   EXPECT_LT(tangent_error / pairs, 0.004);
 }
 
+// The motion's direction turned 3 degrees in pitch: the free plane that fits the road's pixels
+// now tilts against the travel by about as much, which a 2 degree limit refuses.
+TEST(RoadPlaneAlignment, RefusesAPlaneTiltedAgainstTheTravelBeyondTheLimit) {
+  RenderedPair pair = RenderPair("urban", 10, 12);
+  RoadPlaneAlignmentOptions limited;
+  limited.max_pitch_to_travel_deg = 2.0;
+  const RoadPlaneAlignment level = Align(pair, 0.0, limited);
+  ASSERT_TRUE(level.ok);
+  EXPECT_LT(level.pitch_to_travel_deg, 1.0);
+  const Eigen::AngleAxisd pitch(3.0 / kDegPerRad, Eigen::Vector3d::UnitX());
+  pair.cur_from_prev =
+      MakeRigid3d(pair.cur_from_prev.linear(), pitch * pair.cur_from_prev.translation());
+  const RoadPlaneAlignment unlimited = Align(pair, 0.0);
+  ASSERT_TRUE(unlimited.ok);
+  EXPECT_GT(unlimited.pitch_to_travel_deg, 2.0);
+  EXPECT_FALSE(Align(pair, 0.0, limited).ok);
+}
+
 TEST(RoadPlaneAlignment, FindsNoPlaneWithoutRoadTexture) {
   RenderedPair pair = RenderPair("urban", 10, 12);
   pair.prev_image.setTo(128);
