@@ -257,11 +257,12 @@ struct LevelFit {
   int iterations = 0;
 };
 
-// The directions the fit may move in with the normal perpendicular to the translation
-// (columns: two for m, the grey offset).
-Eigen::Matrix<double, 4, 3> TangentParameters(const WarpState& state) {
-  const Eigen::Vector3d u = state.translation_direction;
-  const Eigen::Vector3d along_normal = (state.m - state.m.dot(u) * u).normalized();
+// Moves m into the plane perpendicular to the translation and returns the directions the fit
+// may then move in (columns: two for m, the grey offset).
+Eigen::Matrix<double, 4, 3> HoldNormalTangentToTravel(WarpState* state) {
+  const Eigen::Vector3d u = state->translation_direction;
+  state->m -= state->m.dot(u) * u;
+  const Eigen::Vector3d along_normal = state->m.normalized();
   Eigen::Matrix<double, 4, 3> free = Eigen::Matrix<double, 4, 3>::Zero();
   free.block<3, 1>(0, 0) = along_normal;
   free.block<3, 1>(0, 1) = u.cross(along_normal);
@@ -272,10 +273,8 @@ Eigen::Matrix<double, 4, 3> TangentParameters(const WarpState& state) {
 // Gauss-Newton with the robust loss's weights at one level on m and the grey offset.
 LevelFit FitLevel(const Level& level, const std::vector<Sample>& samples,
                   const RoadPlaneAlignmentOptions& options, WarpState* state) {
-  if (options.tangent_to_travel) {
-    state->m -= state->m.dot(state->translation_direction) * state->translation_direction;
-  }
-  const Eigen::Matrix<double, 4, 3> tangent = TangentParameters(*state);
+  Eigen::Matrix<double, 4, 3> tangent;
+  if (options.tangent_to_travel) tangent = HoldNormalTangentToTravel(state);
   const Eigen::Vector3d direction = state->Direction();
   const GreyLoss loss(options);
   LevelFit fit;
