@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -15,20 +13,10 @@
 #include "roadscale/eval/plots.h"
 #include "roadscale/util/atomic_file.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/string_printf.h"
 
 namespace roadscale {
 namespace {
-
-std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-
-std::string Format(const char* format, ...) {
-  char buffer[512];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return buffer;
-}
 
 std::string Escape(const std::string& text) {
   std::string out;
@@ -177,8 +165,8 @@ std::vector<const FrameSeries*> SeriesOfKind(const HtmlReportInput& input, Frame
 }
 
 std::string NoSegmentFits(const KittiOdometryResult& kitti, float length_m) {
-  return Format("no segment of %g m fits a %.1f m trajectory", static_cast<double>(length_m),
-                static_cast<double>(kitti.gt_path_length_m));
+  return StringPrintf("no segment of %g m fits a %.1f m trajectory", static_cast<double>(length_m),
+                      static_cast<double>(kitti.gt_path_length_m));
 }
 
 std::string ShortestNoSegmentFits(const KittiOdometryResult& kitti) {
@@ -211,7 +199,7 @@ class Page {
 
   void Figure(const std::string& svg, const std::string& label, const char* css_class = "") {
     html_ += std::string("<figure class=\"") + css_class + "\">\n" +
-             InlineSvg(svg, Format("f%d-", figures_++), label) + "</figure>\n";
+             InlineSvg(svg, StringPrintf("f%d-", figures_++), label) + "</figure>\n";
   }
 
   void Note(const std::string& text) { html_ += "<p class=\"note\">" + Escape(text) + "</p>\n"; }
@@ -280,11 +268,12 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
     for (const auto& [name, value] : input_.inputs) {
       html_ += "<dt>" + Escape(name) + "</dt><dd>" + Escape(value) + "</dd>\n";
     }
-    html_ += Format("<dt>frames</dt><dd>%zu</dd>\n", Frames());
-    html_ += "<dt>ground truth</dt><dd>" +
-             std::string(HasGroundTruth() ? Format("%zu poses", input_.gt_world_from_cam.size())
-                                          : "none") +
-             "</dd>\n</dl>\n";
+    html_ += StringPrintf("<dt>frames</dt><dd>%zu</dd>\n", Frames());
+    html_ +=
+        "<dt>ground truth</dt><dd>" +
+        std::string(HasGroundTruth() ? StringPrintf("%zu poses", input_.gt_world_from_cam.size())
+                                     : "none") +
+        "</dd>\n</dl>\n";
     for (const std::string& warning : input_.warnings) {
       html_ += "<div class=\"warning\">" + Escape(warning) + "</div>\n";
     }
@@ -300,51 +289,53 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
     const TrajectoryEvaluation& evaluation = *input_.evaluation;
     const KittiOdometryResult& kitti = evaluation.kitti;
     const std::string segments =
-        kitti.per_length.empty() ? Format("%d segments", kitti.n_segments())
-                                 : Format("%d segments of %g-%g m", kitti.n_segments(),
-                                          static_cast<double>(kitti.per_length.front().length_m),
-                                          static_cast<double>(kitti.per_length.back().length_m));
+        kitti.per_length.empty()
+            ? StringPrintf("%d segments", kitti.n_segments())
+            : StringPrintf("%d segments of %g-%g m", kitti.n_segments(),
+                           static_cast<double>(kitti.per_length.front().length_m),
+                           static_cast<double>(kitti.per_length.back().length_m));
     const std::string none_fits = ShortestNoSegmentFits(kitti);
     Card("KITTI t_err",
-         kitti.t_err ? std::optional(Format("%.4f %%", KittiTErrPercent(*kitti.t_err)))
+         kitti.t_err ? std::optional(StringPrintf("%.4f %%", KittiTErrPercent(*kitti.t_err)))
                      : std::nullopt,
          segments, none_fits);
     Card("KITTI r_err",
-         kitti.r_err ? std::optional(Format("%.6f deg/m", KittiRErrDegPerMetre(*kitti.r_err)))
+         kitti.r_err ? std::optional(StringPrintf("%.6f deg/m", KittiRErrDegPerMetre(*kitti.r_err)))
                      : std::nullopt,
          segments, none_fits);
-    Card("ATE (se3)", Format("%.4f m", evaluation.errors.ate_se3_m),
+    Card("ATE (se3)", StringPrintf("%.4f m", evaluation.errors.ate_se3_m),
          "position RMSE after rigid alignment", "");
     const TrajectoryErrors& errors = evaluation.errors;
     Card("Length ratio",
-         errors.length_ratio ? std::optional(Format("%.6f", *errors.length_ratio)) : std::nullopt,
-         Format("estimate %.1f m / ground truth %.1f m", errors.est_path_length_m,
-                errors.gt_path_length_m),
+         errors.length_ratio ? std::optional(StringPrintf("%.6f", *errors.length_ratio))
+                             : std::nullopt,
+         StringPrintf("estimate %.1f m / ground truth %.1f m", errors.est_path_length_m,
+                      errors.gt_path_length_m),
          "undefined: the ground truth does not move");
     html_ += "</div>\n</header>\n";
   }
 
   void MetricsTables(const TrajectoryEvaluation& evaluation) {
     const KittiOdometryResult& kitti = evaluation.kitti;
-    html_ += Format(
+    html_ += StringPrintf(
         "<table>\n<caption>KITTI odometry metric (devkit definition, %zu frames)</caption>\n"
         "<tr><th>Segment length</th><th>Segments</th><th>t_err [%%]</th><th>r_err "
         "[deg/m]</th></tr>\n",
         evaluation.frames);
     const auto row = [&](const std::string& name, int segments, const std::optional<float>& t_err,
                          const std::optional<float>& r_err, const std::string& none_fits) {
-      html_ += "<tr><td>" + Escape(name) + Format("</td><td>%d</td>", segments);
+      html_ += "<tr><td>" + Escape(name) + StringPrintf("</td><td>%d</td>", segments);
       if (t_err && r_err) {
-        html_ += Format("<td>%.4f</td><td>%.6f</td></tr>\n", KittiTErrPercent(*t_err),
-                        KittiRErrDegPerMetre(*r_err));
+        html_ += StringPrintf("<td>%.4f</td><td>%.6f</td></tr>\n", KittiTErrPercent(*t_err),
+                              KittiRErrDegPerMetre(*r_err));
       } else {
         html_ += "<td colspan=\"2\" class=\"text\">" + Escape(none_fits) + "</td></tr>\n";
       }
     };
     row("all (mean)", kitti.n_segments(), kitti.t_err, kitti.r_err, ShortestNoSegmentFits(kitti));
     for (const KittiLengthResult& length : kitti.per_length) {
-      row(Format("%g m", static_cast<double>(length.length_m)), length.n_segments, length.t_err,
-          length.r_err, NoSegmentFits(kitti, length.length_m));
+      row(StringPrintf("%g m", static_cast<double>(length.length_m)), length.n_segments,
+          length.t_err, length.r_err, NoSegmentFits(kitti, length.length_m));
     }
     html_ += "</table>\n";
 
@@ -353,23 +344,23 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
     const auto line = [&](const std::string& name, const std::string& value) {
       html_ += "<tr><td>" + Escape(name) + "</td><td>" + Escape(value) + "</td></tr>\n";
     };
-    line("ATE, as given", Format("%.4f m", errors.ate_none_m));
-    line("ATE, se3 aligned", Format("%.4f m", errors.ate_se3_m));
+    line("ATE, as given", StringPrintf("%.4f m", errors.ate_none_m));
+    line("ATE, se3 aligned", StringPrintf("%.4f m", errors.ate_se3_m));
     line("ATE, sim3 aligned",
          errors.ate_sim3_m && errors.sim3_scale
-             ? Format("%.4f m (scale %.6f)", *errors.ate_sim3_m, *errors.sim3_scale)
+             ? StringPrintf("%.4f m (scale %.6f)", *errors.ate_sim3_m, *errors.sim3_scale)
              : std::string("undefined: the estimate does not move"));
-    line("RPE translation (RMSE)", Format("%.5f m", errors.rpe_trans_rmse_m));
-    line("RPE rotation (RMSE)", Format("%.5f deg", errors.rpe_rot_rmse_deg));
-    line("Path length, ground truth", Format("%.3f m", errors.gt_path_length_m));
-    line("Path length, estimate", Format("%.3f m", errors.est_path_length_m));
+    line("RPE translation (RMSE)", StringPrintf("%.5f m", errors.rpe_trans_rmse_m));
+    line("RPE rotation (RMSE)", StringPrintf("%.5f deg", errors.rpe_rot_rmse_deg));
+    line("Path length, ground truth", StringPrintf("%.3f m", errors.gt_path_length_m));
+    line("Path length, estimate", StringPrintf("%.3f m", errors.est_path_length_m));
     line("Length ratio (est / gt)", errors.length_ratio
-                                        ? Format("%.6f", *errors.length_ratio)
+                                        ? StringPrintf("%.6f", *errors.length_ratio)
                                         : std::string("undefined: the ground truth does not move"));
-    line("Final drift",
-         errors.final_drift_pct
-             ? Format("%.4f m (%.4f %% of the path)", errors.final_drift_m, *errors.final_drift_pct)
-             : Format("%.4f m", errors.final_drift_m));
+    line("Final drift", errors.final_drift_pct
+                            ? StringPrintf("%.4f m (%.4f %% of the path)", errors.final_drift_m,
+                                           *errors.final_drift_pct)
+                            : StringPrintf("%.4f m", errors.final_drift_m));
     html_ += "</table>\n<details><summary>metrics.json</summary><pre>" +
              Escape(FormatMetricsJson(evaluation)) + "</pre></details>\n";
   }
@@ -455,20 +446,21 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
       for (size_t r = 0; r < std::min(ranges.size(), kShownRanges); ++r) {
         if (r > 0) where += ", ";
         where += ranges[r].first == ranges[r].second
-                     ? Format("%zu", ranges[r].first)
-                     : Format("%zu-%zu", ranges[r].first, ranges[r].second);
+                     ? StringPrintf("%zu", ranges[r].first)
+                     : StringPrintf("%zu-%zu", ranges[r].first, ranges[r].second);
       }
       if (ranges.size() > kShownRanges) {
-        where += Format(", ... (%zu more ranges)", ranges.size() - kShownRanges);
+        where += StringPrintf(", ... (%zu more ranges)", ranges.size() - kShownRanges);
       }
       html_ += "<tr><td>" + Escape(runs[k].first) +
-               Format("</td><td>%zu</td><td>%.1f %%</td>", counts[k],
-                      100.0 * static_cast<double>(counts[k]) / static_cast<double>(status.size())) +
+               StringPrintf(
+                   "</td><td>%zu</td><td>%.1f %%</td>", counts[k],
+                   100.0 * static_cast<double>(counts[k]) / static_cast<double>(status.size())) +
                "<td class=\"text\">" + Escape(where) + "</td></tr>\n";
     }
     html_ += "</table>\n";
     if (status.size() != Frames()) {
-      Note(Format("%zu statuses for %zu frames.", status.size(), Frames()));
+      Note(StringPrintf("%zu statuses for %zu frames.", status.size(), Frames()));
     }
     html_ += "</section>\n";
   }
@@ -499,7 +491,7 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
     const std::vector<const FrameSeries*> stages =
         SeriesOfKind(input_, FrameSeriesKind::kMilliseconds);
     if (input_.wall_time_s && *input_.wall_time_s > 0.0) {
-      html_ += Format(
+      html_ += StringPrintf(
           "<p>End to end: %zu frames in %.2f s, <b>%.2f fps</b> (stages overlap on threads).</p>\n",
           Frames(), *input_.wall_time_s, static_cast<double>(Frames()) / *input_.wall_time_s);
     }
@@ -512,14 +504,14 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
         "<table>\n<tr><th>Stage</th><th>Frames</th><th>Mean [ms]</th><th>Median [ms]</th>"
         "<th>p90 [ms]</th><th>Max [ms]</th><th>fps alone</th></tr>\n";
     const auto row = [&](const std::string& name, const Stats& stats) {
-      html_ += "<tr><td>" + Escape(name) + Format("</td><td>%zu</td>", stats.count);
+      html_ += "<tr><td>" + Escape(name) + StringPrintf("</td><td>%zu</td>", stats.count);
       if (stats.count == 0) {
         html_ += "<td colspan=\"5\" class=\"text\">no values</td></tr>\n";
         return;
       }
-      html_ += Format("<td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td>", stats.mean,
-                      stats.median, stats.p90, stats.max);
-      html_ += stats.mean > 0.0 ? Format("<td>%.1f</td></tr>\n", 1000.0 / stats.mean)
+      html_ += StringPrintf("<td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td>", stats.mean,
+                            stats.median, stats.p90, stats.max);
+      html_ += stats.mean > 0.0 ? StringPrintf("<td>%.1f</td></tr>\n", 1000.0 / stats.mean)
                                 : std::string("<td>-</td></tr>\n");
     };
     size_t longest = 0;
@@ -563,10 +555,11 @@ footer { color: #7a808c; font-size: 12.5px; text-align: center; }
     for (const FrameSeries& series : input_.series) {
       const Stats stats = ComputeStats(series.values);
       html_ += "<tr><td>" + Escape(series.name) + "</td><td class=\"text\">" +
-               KindName(series.kind) + Format("</td><td>%zu</td>", stats.count);
-      html_ += stats.count == 0 ? std::string("<td colspan=\"4\" class=\"text\">no values</td>")
-                                : Format("<td>%.6g</td><td>%.6g</td><td>%.6g</td><td>%.6g</td>",
-                                         stats.min, stats.mean, stats.median, stats.max);
+               KindName(series.kind) + StringPrintf("</td><td>%zu</td>", stats.count);
+      html_ += stats.count == 0
+                   ? std::string("<td colspan=\"4\" class=\"text\">no values</td>")
+                   : StringPrintf("<td>%.6g</td><td>%.6g</td><td>%.6g</td><td>%.6g</td>", stats.min,
+                                  stats.mean, stats.median, stats.max);
       html_ += "</tr>\n";
     }
     html_ += "</table>\n</section>\n";

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "roadscale/synth/random.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale {
 
@@ -18,7 +18,7 @@ void ScaleDriftOptions::Check() const {
 
 std::vector<double> ScaleDriftFactors(size_t num_poses, const ScaleDriftOptions& options) {
   options.Check();
-  synth::Rng rng(options.seed);
+  Rng rng(options.seed);
   std::vector<double> factors;
   factors.reserve(num_poses);
   double walk = 0.0;

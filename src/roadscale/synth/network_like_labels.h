@@ -5,8 +5,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/scene_options.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale::synth {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "roadscale/synth/mesh.h"
-#include "roadscale/synth/random.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale::synth {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "roadscale/synth/colour_math.h"
-#include "roadscale/synth/random.h"
+#include "roadscale/synth/texture_hash.h"
 
 namespace roadscale::synth {
 namespace {

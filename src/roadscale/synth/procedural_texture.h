@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "roadscale/synth/mesh.h"
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/scene_options.h"
+#include "roadscale/synth/texture_hash.h"
 
 namespace roadscale::synth {
 

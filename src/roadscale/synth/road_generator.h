@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "roadscale/synth/centre_line.h"
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/scene_options.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale::synth {
 

@@ -4,9 +4,9 @@
 
 #include "roadscale/synth/centre_line.h"
 #include "roadscale/synth/mesh.h"
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/road_layout.h"
 #include "roadscale/synth/scene_options.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/Core>
 

@@ -6,11 +6,11 @@
 #include "roadscale/synth/centre_line.h"
 #include "roadscale/synth/mesh.h"
 #include "roadscale/synth/object_models.h"
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/road_layout.h"
 #include "roadscale/synth/scene_options.h"
 #include "roadscale/synth/static_world.h"
 #include "roadscale/synth/vehicle_motion.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale::synth {
 

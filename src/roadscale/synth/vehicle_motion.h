@@ -4,8 +4,8 @@
 
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/synth/centre_line.h"
-#include "roadscale/synth/random.h"
 #include "roadscale/synth/scene_options.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/Core>
 

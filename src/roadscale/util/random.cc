@@ -1,8 +1,8 @@
-#include "roadscale/synth/random.h"
+#include "roadscale/util/random.h"
 
 #include <cmath>
 
-namespace roadscale::synth {
+namespace roadscale {
 namespace {
 
 uint64_t SplitMix64(uint64_t& state) {
@@ -52,4 +52,4 @@ Rng Rng::Fork(uint64_t stream) {
   return Rng(SplitMix64(s));
 }
 
-}  // namespace roadscale::synth
+}  // namespace roadscale
