@@ -16,13 +16,18 @@ set -euo pipefail
 roadscale="$1"
 mode="${2:-files}"
 out="$(mktemp -d)"
-trap 'rm -rf "$out"' EXIT
-chmod 755 "$out"  # readable by `nobody` for the permission cases
 cases=0
-fail() {
-  echo "FAILED (case $((cases))): $*"
-  exit 1
+# The shared fail says what is wrong; a failing exit also says in which case (of the $cases
+# begun) it stopped, so that one of the many cases with the same message can be found.
+report_case() {
+  local status=$?
+  [[ $status -eq 0 ]] || echo "FAILED in case $cases"
 }
+trap 'report_case; rm -rf "$out"' EXIT
+chmod 755 "$out"  # readable by `nobody` for the permission cases
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 rows() { wc -l <"$1" | tr -d ' '; }
 
 # expect_error CODE REGEX COMMAND...: exit code CODE, one line on stderr matching REGEX.
@@ -34,7 +39,7 @@ expect_error() {
   "$@" >"$out/stdout.txt" 2>"$out/stderr.txt" || status=$?
   [[ $status -eq $code ]] || fail "exit $status, expected $code: $* -- $(cat "$out/stderr.txt")"
   [[ "$(rows "$out/stderr.txt")" -eq 1 ]] || fail "not one line on stderr: $* -- $(cat "$out/stderr.txt")"
-  grep -Eq -- "$regex" "$out/stderr.txt" || fail "'$regex' not in: $(cat "$out/stderr.txt")"
+  expect_line "$out/stderr.txt" "$regex"
 }
 # expect_ok COMMAND...: exit code 0 and nothing on stderr.
 expect_ok() {
@@ -444,7 +449,7 @@ if [[ "$mode" == "concurrent" ]]; then
   # nothing; the lock of a holder killed with -9 is taken over.
   make_long
   pid="" drive_pid=""
-  trap 'kill -9 $pid $drive_pid 2>/dev/null || true; rm -rf "$out"' EXIT  # none left stopped
+  trap 'report_case; kill -9 $pid $drive_pid 2>/dev/null || true; rm -rf "$out"' EXIT  # none left stopped
   wait_for() {  # FILE: until it exists and is not empty
     for _ in $(seq 1 400); do
       [[ -s "$1" ]] && return 0

@@ -14,12 +14,11 @@ skip() {
   echo "SKIPPED: $*"
   exit 77
 }
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
 work="$(mktemp -d)"
 trap '"$scripts/local_slurm.sh" stop "$work/cluster"; rm -rf "$work"' EXIT
+scratch="$work"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 
 # The cluster: one node of 2 CPUs on this machine (scripts/local_slurm.sh).
 "$scripts/local_slurm.sh" start "$work/cluster" 2>"$work/cluster.txt" ||

@@ -24,10 +24,9 @@ project="$2"
 mode="$3"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 rows() { wc -l <"$1" | tr -d ' '; }
 check_rows() {  # RUN_DIR N: N pose rows (12 numbers each), N TUM rows, a header and N records
   [[ "$(rows "$1/poses_kitti.txt")" -eq "$2" ]] || fail "$1/poses_kitti.txt: not $2 rows"
@@ -86,12 +85,8 @@ if [[ "$mode" == "robustness" ]]; then
 
   cp -r "$out/data" "$out/corrupt"
   echo "not a png" >"$out/corrupt/sequences/00/image_0/000025.png"
-  if "$roadscale" run --kitti "$out/corrupt/sequences/00" --no-segmentation \
-    --out "$out/crun" >/dev/null 2>"$out/err.txt"; then
-    fail "a corrupt image did not fail the run"
-  fi
-  [[ "$(rows "$out/err.txt")" -eq 1 ]] || fail "not one line: $(cat "$out/err.txt")"
-  grep -q "000025.png" "$out/err.txt" || fail "the error does not name the file: $(cat "$out/err.txt")"
+  expect_failure "000025.png" "$roadscale" run --kitti "$out/corrupt/sequences/00" \
+    --no-segmentation --out "$out/crun"
   check_rows "$out/crun" 25
 
   "$roadscale" run --kitti "$seq" --no-segmentation --sequential --out "$out/int" \

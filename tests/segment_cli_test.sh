@@ -15,10 +15,9 @@ if [[ ! -f "$shared/models/espnetv2/espnetv2_s2.0_city_640x192.onnx" || ! -d "$s
 fi
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 
 "$roadscale" segment --kitti "$sequence" --model "$source_dir/config/models/espnetv2_640x192.yaml" \
   --out "$out/net" --frames 10:14 --every 2

@@ -8,10 +8,9 @@ roadscale="$1"
 source_dir="$2"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-fail() {
-  echo "FAILED: $*"
-  exit 1
-}
+scratch="$out"
+# shellcheck source=cli_checks.sh
+source "$(dirname "$0")/cli_checks.sh"
 
 "$roadscale" synth --preset stop_and_go --frames 4 --seed 3 --out "$out/a" --colour
 seq="$out/a/sequences/00"
