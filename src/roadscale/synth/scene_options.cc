@@ -74,6 +74,8 @@ void VehicleOptions::Check() const {
               "must lie in [-30, 30]");
   CheckOption(std::abs(camera_roll_deg) <= 30.0, "Vehicle.camera_roll_deg",
               "must lie in [-30, 30]");
+  CheckOption(std::isfinite(camera_ahead) && camera_ahead >= 0.0 && camera_ahead <= 5.0,
+              "Vehicle.camera_ahead", "must lie in [0, 5] metres");
   CheckNonNegative(initial_speed, "Vehicle.initial_speed");
   CheckNonNegative(speed_min, "Vehicle.speed_min");
   CheckRange(speed_min, speed_max, "Vehicle.speed_min/max");

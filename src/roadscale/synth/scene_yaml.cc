@@ -176,6 +176,7 @@ void ReadVehicle(Block& b, VehicleOptions* o) {
   b.Get("h0", &o->h0);
   b.Get("camera_pitch_deg", &o->camera_pitch_deg);
   b.Get("camera_roll_deg", &o->camera_roll_deg);
+  b.Get("camera_ahead", &o->camera_ahead);
   b.Get("initial_speed", &o->initial_speed);
   b.Get("speed_min", &o->speed_min);
   b.Get("speed_max", &o->speed_max);

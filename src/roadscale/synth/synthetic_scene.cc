@@ -74,7 +74,8 @@ SyntheticScene::SyntheticScene(const SceneOptions& options, int frames)
 VehicleState SyntheticScene::EgoState(int index) const { return motion_->StateAt(Time(index)); }
 
 Rigid3d SyntheticScene::SceneFromCam(int index) const {
-  return VehicleMotion::WorldFromCam(*line_, EgoState(index), options_.vehicle.h0);
+  return VehicleMotion::WorldFromCam(*line_, EgoState(index), options_.vehicle.h0,
+                                     options_.vehicle.camera_ahead);
 }
 
 Rigid3d SyntheticScene::WorldFromCam(int index) const {

@@ -133,7 +133,8 @@ VehicleState VehicleMotion::StateAt(double time) const {
   return state;
 }
 
-Rigid3d VehicleMotion::WorldFromCam(const CentreLine& line, const VehicleState& state, double h0) {
+Rigid3d VehicleMotion::WorldFromCam(const CentreLine& line, const VehicleState& state, double h0,
+                                    double camera_ahead) {
   const RoadFrame frame = line.FrameAt(state.position);
   Eigen::Matrix3d base;
   const Eigen::Vector3d z = frame.tangent;
@@ -144,7 +145,7 @@ Rigid3d VehicleMotion::WorldFromCam(const CentreLine& line, const VehicleState& 
   const Eigen::Matrix3d turn = (Eigen::AngleAxisd(state.pitch, Eigen::Vector3d::UnitX()) *
                                 Eigen::AngleAxisd(state.roll, Eigen::Vector3d::UnitZ()))
                                    .toRotationMatrix();
-  return MakeRigid3d(base * turn, frame.point + h0 * frame.normal);
+  return MakeRigid3d(base * turn, frame.point + h0 * frame.normal + camera_ahead * frame.tangent);
 }
 
 }  // namespace roadscale::synth

@@ -35,9 +35,12 @@ class VehicleMotion {
   double PositionAt(double time) const;
   double duration() const { return duration_; }
 
-  // The camera pose: h0 above the road along the road normal under the camera, looking
-  // along the road, turned by the state's pitch and roll about the camera centre.
-  static Rigid3d WorldFromCam(const CentreLine& line, const VehicleState& state, double h0);
+  // The camera pose: h0 above the road along the road normal at the state's position, moved
+  // `camera_ahead` metres along the road's tangent there, looking along that tangent, turned
+  // by the state's pitch and roll about the camera centre. In a turn, a camera ahead of the
+  // point that follows the lane moves off its optical axis (VehicleOptions::camera_ahead).
+  static Rigid3d WorldFromCam(const CentreLine& line, const VehicleState& state, double h0,
+                              double camera_ahead = 0.0);
 
  private:
   struct Bump {

@@ -1,5 +1,6 @@
 #include "roadscale/synth/vehicle_motion.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -59,6 +60,27 @@ TEST(VehicleMotion, CameraIsH0AboveTheRoadAlongItsNormal) {
   state.pitch = 0.05;
   const Eigen::Matrix3d up = VehicleMotion::WorldFromCam(line, state, 1.65).linear();
   EXPECT_GT(up.col(2).dot(frame.normal), 0.04);
+}
+
+// A camera L ahead of the point that follows a circle of radius R moves on a circle of radius
+// sqrt(R^2 + L^2), at atan(L / R) to its optical axis; at L = 0 along it.
+TEST(VehicleMotion, ACameraAheadOfTheLaneTravelsOffItsAxisInATurn) {
+  const double radius = 20.0, ahead = 1.5;
+  const CentreLine line({{10.0, 0.0, 0.0, 0.0, 0.0}, {100.0, 1.0 / radius, 0.0, 0.0, 0.0}});
+  VehicleState a, b;
+  a.position = 50.0;
+  b.position = 50.001;
+  for (const double camera_ahead : {0.0, ahead}) {
+    const Rigid3d cam_a = VehicleMotion::WorldFromCam(line, a, 1.65, camera_ahead);
+    const Rigid3d cam_b = VehicleMotion::WorldFromCam(line, b, 1.65, camera_ahead);
+    const Eigen::Vector3d travel = (cam_b.translation() - cam_a.translation()).normalized();
+    const double off_axis = std::acos(std::clamp(travel.dot(cam_a.linear().col(2)), -1.0, 1.0));
+    EXPECT_NEAR(off_axis, std::atan(camera_ahead / radius), 1e-4) << camera_ahead;
+    // Still h0 above the road's tangent plane at the lane point, and travelling parallel to it.
+    const RoadFrame frame = line.FrameAt(a.position);
+    EXPECT_NEAR((cam_a.translation() - frame.point).dot(frame.normal), 1.65, 1e-9);
+    EXPECT_NEAR(travel.dot(frame.normal), 0.0, 1e-6);
+  }
 }
 
 TEST(VehicleMotion, SameSeedSameMotion) {
