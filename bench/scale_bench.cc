@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include "roadscale/scale/scale_estimator.h"
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 
 namespace roadscale {
 namespace {

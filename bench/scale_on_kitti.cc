@@ -77,8 +77,8 @@
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
-#include "roadscale/scale/synthetic_road_scene.h"
 #include "roadscale/segmentation/make_segmenter.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/shared_data.h"
 

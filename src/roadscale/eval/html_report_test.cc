@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/eval/test_trajectories.h"
 #include "roadscale/testing/temp_dir.h"
+#include "roadscale/testing/test_trajectories.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/eval/test_trajectories.h"
+#include "roadscale/testing/test_trajectories.h"
 
 namespace roadscale {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/eval/test_trajectories.h"
+#include "roadscale/testing/test_trajectories.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

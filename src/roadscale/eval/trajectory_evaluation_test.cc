@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/eval/test_trajectories.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/testing/shared_data.h"
+#include "roadscale/testing/test_trajectories.h"
 
 namespace roadscale {
 namespace {

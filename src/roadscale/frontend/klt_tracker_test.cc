@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/frontend/frontend_test_util.h"
+#include "roadscale/testing/frontend_test_util.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/frontend/frontend_test_util.h"
 #include "roadscale/frontend/sampson_refinement.h"
 #include "roadscale/geometry/angles.h"
+#include "roadscale/testing/frontend_test_util.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

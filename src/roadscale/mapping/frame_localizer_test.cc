@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/mapping/mapping_test_scene.h"
+#include "roadscale/testing/mapping_test_scene.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

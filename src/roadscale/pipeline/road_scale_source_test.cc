@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 
 namespace roadscale {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/geometry/pinhole_camera.h"
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

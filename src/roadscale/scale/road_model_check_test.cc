@@ -8,7 +8,7 @@
 #include "roadscale/geometry/angles.h"
 #include "roadscale/geometry/pinhole_camera.h"
 #include "roadscale/scale/road_plane.h"
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 
 namespace roadscale {
 namespace {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/geometry/angles.h"
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

@@ -1,4 +1,4 @@
-#include "roadscale/scale/synthetic_road_scene.h"
+#include "roadscale/testing/synthetic_road_scene.h"
 
 #include <algorithm>
 #include <random>

@@ -1,4 +1,4 @@
-#include "roadscale/mapping/mapping_test_scene.h"
+#include "roadscale/testing/mapping_test_scene.h"
 
 #include <cmath>
 #include <random>
