@@ -212,8 +212,10 @@ void RunRun(const RunArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
   auto last_print = start;
   std::vector<FrameRecord> records;
-  const auto on_frame = [&](const FrameRecord& record) {
+  std::vector<Rigid3d> world_from_cam;
+  const auto on_frame = [&](const FrameRecord& record, const Rigid3d& pose) {
     records.push_back(record);
+    world_from_cam.push_back(pose);
     if (!progress) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - last_print < std::chrono::milliseconds(200) && records.size() != total) return;
@@ -266,7 +268,7 @@ void RunRun(const RunArguments& arguments) {
   report.records = std::move(records);
   report.scale_diagnostics_header =
       keyframe_mode ? MappedFrameCsvHeader() : scale_source->DiagnosticsCsvHeader();
-  report.est_world_from_cam = ReadKittiTrajectory(poses_path).world_from_cam;
+  report.est_world_from_cam = std::move(world_from_cam);
   report.wall_time_s = result.summary.wall_s;
   if (ground_truth != nullptr && ground_truth->world_from_cam.size() >= report.records.size()) {
     Trajectory gt = *ground_truth;

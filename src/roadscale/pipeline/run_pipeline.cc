@@ -7,12 +7,14 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core/utility.hpp>
 
 #include "roadscale/pipeline/bounded_queue.h"
 #include "roadscale/pipeline/carried_segmentation_run.h"
+#include "roadscale/pipeline/run_output_files.h"
 #include "roadscale/pipeline/stage_thread.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/util/elapsed_time.h"
@@ -152,8 +154,7 @@ std::string FrameName(const Frame& frame) {
 
 PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
                               const PipelineOptions& options, const std::string& out_dir,
-                              const RunPipelineOptions& run_options,
-                              const std::function<void(const FrameRecord&)>& on_frame,
+                              const RunPipelineOptions& run_options, const FrameOutput& on_frame,
                               const std::atomic<bool>* stop) {
   return RunPipeline(source, std::vector<Segmenter*>{&segmenter}, scale, options, out_dir,
                      run_options, on_frame, stop);
@@ -162,8 +163,7 @@ PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSo
 PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>& segmenters,
                               ScaleSource& scale, const PipelineOptions& options,
                               const std::string& out_dir, const RunPipelineOptions& run_options,
-                              const std::function<void(const FrameRecord&)>& on_frame,
-                              const std::atomic<bool>* stop) {
+                              const FrameOutput& on_frame, const std::atomic<bool>* stop) {
   run_options.Check();
   CheckOption(!segmenters.empty(), "segmenters", "at least one segmenter is needed");
   // Before any thread starts: OpenCV's thread count is one process-wide setting, and
@@ -176,24 +176,38 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
       if (cv::getNumThreads() != threads) cv::setNumThreads(threads);
     }
   } restore_opencv_threads{previous_opencv_threads};
-  SequentialPipeline pipeline(source.camera(), scale, options, out_dir);
+  SequentialPipeline pipeline(source.camera(), scale, options);
+  std::optional<RunOutputFiles> files;
+  if (!out_dir.empty()) files.emplace(out_dir, pipeline.DiagnosticsCsvHeader());
   PipelineRunResult result;
-  pipeline.SetWrittenCallback([&](const FrameRecord& record) {
+  pipeline.SetOutput([&](const FrameRecord& record, const Rigid3d& world_from_cam) {
+    if (files) files->Write(record, world_from_cam);
     result.summary.Add(record);
-    if (on_frame) on_frame(record);
+    if (on_frame) on_frame(record, world_from_cam);
   });
   const Clock::time_point start = Clock::now();
   const double cpu_start = ProcessCpuMs();
   // Without segmentation there is nothing to schedule or carry.
   const bool carried = options.segmentation_schedule.mode == SegmentationScheduleMode::kKeyframes &&
                        dynamic_cast<const NoSegmenter*>(segmenters.front()) == nullptr;
-  if (carried) {
-    result.interrupted =
-        RunWithCarriedMasks(source, segmenters, pipeline, options, run_options, stop);
-  } else {
-    result.interrupted = run_options.threaded
-                             ? RunThreaded(source, segmenters, pipeline, stop)
-                             : RunSequentially(source, *segmenters.front(), pipeline, stop);
+  try {
+    if (carried) {
+      result.interrupted =
+          RunWithCarriedMasks(source, segmenters, pipeline, options, run_options, stop);
+    } else {
+      result.interrupted = run_options.threaded
+                               ? RunThreaded(source, segmenters, pipeline, stop)
+                               : RunSequentially(source, *segmenters.front(), pipeline, stop);
+    }
+  } catch (const std::exception&) {
+    // The frames taken before the error still go out (those waiting for a first scale or in
+    // the back end's window).
+    try {
+      pipeline.Finish();
+    } catch (const std::exception&) {
+      // A second error (disk full) is not the one that stopped the run: that one is reported.
+    }
+    throw;
   }
   pipeline.Finish();
   result.summary.wall_s = MillisecondsSince(start) / 1000.0;

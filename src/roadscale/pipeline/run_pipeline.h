@@ -44,17 +44,18 @@ struct PipelineRunResult {
 // ("000042"), or the index as %06d for a video frame.
 std::string FrameName(const Frame& frame);
 
-// Runs every frame of `source` through segmentation and a SequentialPipeline writing to
-// `out_dir` (see SequentialPipeline for the files). `on_frame` is called after each frame
-// is written, in order, from the writing stage. `stop` (may be null) is read before each
-// frame is loaded: once it is true no new frame is read, the frames already read are
+// Runs every frame of `source` through segmentation and a SequentialPipeline, writing each
+// finished frame to `out_dir` (RunOutputFiles: poses_kitti.txt, poses_tum.txt, frames.csv;
+// an empty `out_dir` writes no files). `on_frame` is called with each frame and its pose
+// after its rows are written, in order, from the scale and pose stage. `stop` (may be null) is read
+// before each frame is loaded: once it is true no new frame is read, the frames already read are
 // finished, and the result says `interrupted`. An error in any stage (a corrupt image, a
 // missing label file) stops the run: the frames before it are finished and written, then
 // the error is thrown.
 PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
                               const PipelineOptions& options, const std::string& out_dir,
                               const RunPipelineOptions& run_options = {},
-                              const std::function<void(const FrameRecord&)>& on_frame = {},
+                              const FrameOutput& on_frame = {},
                               const std::atomic<bool>* stop = nullptr);
 
 // The same with stage 1 on one thread per segmenter (interchangeable copies: each frame is
@@ -64,7 +65,7 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
                               ScaleSource& scale, const PipelineOptions& options,
                               const std::string& out_dir,
                               const RunPipelineOptions& run_options = {},
-                              const std::function<void(const FrameRecord&)>& on_frame = {},
+                              const FrameOutput& on_frame = {},
                               const std::atomic<bool>* stop = nullptr);
 
 }  // namespace roadscale

@@ -3,40 +3,26 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iomanip>
 #include <sstream>
-#include <system_error>
 
 #include <opencv2/imgproc.hpp>
 
 #include "roadscale/io/pose_row_check.h"
-#include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/thread_cpu_time.h"
 #include "roadscale/segmentation/segmentation_masks.h"
 #include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
-#include "roadscale/util/line_file.h"
 
 namespace roadscale {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::ofstream OpenOutput(const std::string& path) {
-  std::ofstream file(path, std::ios::out | std::ios::trunc);
-  if (!file) ThrowFileError(path, "cannot create the file");
-  return file;
-}
-
-void WriteLine(std::ofstream& file, const std::string& path, const std::string& line) {
-  WriteWholeLine(file, path, line);
-}
-
-// A pose the trajectory readers would reject (eval, rescale, the run's own report) is never
-// written: the run stops with an error naming the frame, the rows before it intact.
-void CheckPoseToWrite(const Rigid3d& world_from_cam, const FrameRecord& record) {
+// A pose the trajectory readers would reject (eval, rescale, the run's own report) never
+// reaches the output: the run stops with an error naming the frame, the rows before it intact.
+void CheckPoseToOutput(const Rigid3d& world_from_cam, const FrameRecord& record) {
   const Eigen::Vector3d& position = world_from_cam.translation();
   if (world_from_cam.matrix().allFinite() && position.cwiseAbs().maxCoeff() <= kMaxTranslationM) {
     return;
@@ -96,7 +82,7 @@ void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked) {
 }
 
 SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& scale,
-                                       const PipelineOptions& options, const std::string& out_dir)
+                                       const PipelineOptions& options)
     : scale_(scale),
       backend_(options.mapping.mode == MappingOptions::Mode::kKeyframe
                    ? std::make_unique<KeyframeBackend>(
@@ -107,21 +93,6 @@ SequentialPipeline::SequentialPipeline(const CameraSetup& camera, ScaleSource& s
       frontend_(camera.camera, options.frontend),
       max_waiting_frames_(options.max_frames_before_first_scale) {
   options.Check();
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error || !std::filesystem::is_directory(out_dir)) {
-    ThrowFileError(out_dir, "cannot create the output folder" +
-                                (error ? " (" + error.message() + ")" : std::string()));
-  }
-  poses_path_ = (std::filesystem::path(out_dir) / "poses_kitti.txt").string();
-  tum_path_ = (std::filesystem::path(out_dir) / "poses_tum.txt").string();
-  records_path_ = (std::filesystem::path(out_dir) / "frames.csv").string();
-  poses_ = OpenOutput(poses_path_);
-  tum_ = OpenOutput(tum_path_);
-  records_ = OpenOutput(records_path_);
-  const std::string scale_columns = DiagnosticsCsvHeader();
-  WriteLine(records_, records_path_,
-            FrameRecordCsvHeader() + (scale_columns.empty() ? "" : "," + scale_columns));
 }
 
 std::string SequentialPipeline::DiagnosticsCsvHeader() const {
@@ -191,7 +162,7 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
     waiting.scale_ms = MillisecondsSince(backend_start);
     waiting.total_ms += MillisecondsSince(start);
     waiting.scale_cpu_ms = ThreadCpuMs() - cpu_start;
-    for (const MappedFrame& mapped : finished) WriteMappedFrame(mapped);
+    for (const MappedFrame& mapped : finished) OutputMappedFrame(mapped);
     record.status = "waiting";
     return record;
   }
@@ -222,20 +193,20 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
     record.scale_cpu_ms = ThreadCpuMs() - cpu_start;
     waiting_.push_back({record, result.motion});
     if (static_cast<int>(waiting_.size()) >= max_waiting_frames_) {
-      WriteWaitingFrames(0.0, 0.0);
+      OutputWaitingFrames(0.0, 0.0);
       stopped_waiting_ = true;
     }
     return record;
   }
-  if (!waiting_.empty()) WriteWaitingFrames(scale.step_length_m, result.motion.parallax_px);
+  if (!waiting_.empty()) OutputWaitingFrames(scale.step_length_m, result.motion.parallax_px);
   record.total_ms += MillisecondsSince(start);
   record.scale_cpu_ms = ThreadCpuMs() - cpu_start;
-  ApplyAndWrite(record, result.motion, scale, false);
+  ApplyAndOutput(record, result.motion, scale, false);
   return record;
 }
 
-void SequentialPipeline::ApplyAndWrite(FrameRecord record, const TwoViewMotion& motion,
-                                       const ScaleResult& scale, bool backfilled) {
+void SequentialPipeline::ApplyAndOutput(FrameRecord record, const TwoViewMotion& motion,
+                                        const ScaleResult& scale, bool backfilled) {
   record.pose_update = integrator_.Apply(motion, scale);
   record.step_length_m = integrator_.step_length();
   switch (record.pose_update) {
@@ -253,10 +224,10 @@ void SequentialPipeline::ApplyAndWrite(FrameRecord record, const TwoViewMotion& 
       break;
   }
 
-  WriteRows(record, integrator_.world_from_cam());
+  Output(record, integrator_.world_from_cam());
 }
 
-void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
+void SequentialPipeline::OutputMappedFrame(const MappedFrame& mapped) {
   if (records_waiting_for_backend_.empty() ||
       records_waiting_for_backend_.front().index != static_cast<size_t>(mapped.frame_index)) {
     throw Error("keyframe back end: frame " + std::to_string(mapped.frame_index) +
@@ -293,26 +264,15 @@ void SequentialPipeline::WriteMappedFrame(const MappedFrame& mapped) {
   }
   record.scale_diagnostics_csv = FormatMappedFrameCsv(mapped);
   last_written_world_from_cam_ = mapped.world_from_cam;
-  WriteRows(record, mapped.world_from_cam);
+  Output(record, mapped.world_from_cam);
 }
 
-void SequentialPipeline::WriteRows(const FrameRecord& record, const Rigid3d& world_from_cam) {
-  CheckPoseToWrite(world_from_cam, record);
-  WriteLine(poses_, poses_path_, FormatKittiRow(world_from_cam));
-  WriteLine(tum_, tum_path_, FormatTumRow(record.timestamp, world_from_cam));
-  // The scale source's own columns, left empty in frames it did not see.
-  const std::string scale_columns = DiagnosticsCsvHeader();
-  std::string row = FormatFrameRecordCsv(record);
-  if (!scale_columns.empty()) {
-    row += record.scale_diagnostics_csv.empty()
-               ? std::string(std::count(scale_columns.begin(), scale_columns.end(), ',') + 1, ',')
-               : "," + record.scale_diagnostics_csv;
-  }
-  WriteLine(records_, records_path_, row);
-  if (on_written_) on_written_(record);
+void SequentialPipeline::Output(const FrameRecord& record, const Rigid3d& world_from_cam) {
+  CheckPoseToOutput(world_from_cam, record);
+  if (output_) output_(record, world_from_cam);
 }
 
-void SequentialPipeline::WriteWaitingFrames(double first_length_m, double first_parallax_px) {
+void SequentialPipeline::OutputWaitingFrames(double first_length_m, double first_parallax_px) {
   std::vector<WaitingFrame> waiting;
   waiting.swap(waiting_);
   for (const WaitingFrame& frame : waiting) {
@@ -322,26 +282,14 @@ void SequentialPipeline::WriteWaitingFrames(double first_length_m, double first_
       scale.step_length_m =
           ParallaxScaledLength(first_length_m, frame.motion.parallax_px, first_parallax_px);
     }
-    ApplyAndWrite(frame.record, frame.motion, scale, first_length_m > 0.0);
+    ApplyAndOutput(frame.record, frame.motion, scale, first_length_m > 0.0);
   }
 }
 
 void SequentialPipeline::Finish() {
-  WriteWaitingFrames(0.0, 0.0);
+  OutputWaitingFrames(0.0, 0.0);
   if (backend_) {
-    for (const MappedFrame& mapped : backend_->Finish()) WriteMappedFrame(mapped);
-  }
-}
-
-SequentialPipeline::~SequentialPipeline() {
-  // Reached without Finish only when an error ends the run: whoever set the callback may be
-  // gone already, the rows still get written.
-  on_written_ = nullptr;
-  try {
-    Finish();
-  } catch (const std::exception&) {
-    // A write error here (disk full) cannot be reported from a destructor; the rows written
-    // so far stay valid.
+    for (const MappedFrame& mapped : backend_->Finish()) OutputMappedFrame(mapped);
   }
 }
 
@@ -424,7 +372,7 @@ std::string RunSummary::Format() const {
 
 RunSummary RunSequentialPipeline(FrameSource& source, ScaleSource& scale,
                                  const PipelineOptions& options, const std::string& out_dir,
-                                 const std::function<void(const FrameRecord&)>& on_frame) {
+                                 const FrameOutput& on_frame) {
   NoSegmenter no_segmentation;
   RunPipelineOptions run_options;
   run_options.threaded = false;

@@ -2,7 +2,6 @@
 
 #include <cstddef>
 #include <deque>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -124,21 +123,23 @@ struct TrackedFrame {
 // tracks on it.
 void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked);
 
+// Where a frame goes once its pose is final, in frame order: its record and its metric
+// world_from_cam (the first frame is the world). RunOutputFiles writes them to a run's
+// folder; a program embedding the pipeline keeps them in memory.
+using FrameOutput = std::function<void(const FrameRecord&, const Rigid3d& world_from_cam)>;
+
 // The per-frame logic of the system, for each frame: frontend (features outside the static
 // mask, tracks landing on moving objects dropped) -> two-view motion -> scale source (with
-// the previous frame's road mask) -> pose -> output rows. Owns the frontend, the pose
-// integrator and the output files.
+// the previous frame's road mask) -> pose -> the frame's output. Owns the frontend, the pose
+// integrator and the keyframe back end; writes no files (RunOutputFiles does).
 //
 // The work is split in two stages, Track (the frontend) and Integrate (scale, pose,
-// writing), which touch disjoint state: one thread may run Track on frame k+1 while another
+// output), which touch disjoint state: one thread may run Track on frame k+1 while another
 // runs Integrate on frame k. Each stage must see the frames in order. ProcessFrame runs both.
 class SequentialPipeline {
  public:
-  // Creates `out_dir` when needed and opens OUT/poses_kitti.txt, OUT/poses_tum.txt and
-  // OUT/frames.csv. Throws Error on invalid options or camera, or when the files cannot be
-  // created.
-  SequentialPipeline(const CameraSetup& camera, ScaleSource& scale, const PipelineOptions& options,
-                     const std::string& out_dir);
+  // Throws Error on invalid options or camera.
+  SequentialPipeline(const CameraSetup& camera, ScaleSource& scale, const PipelineOptions& options);
 
   // The frontend stage. Throws Error on an image or mask of the wrong size.
   TrackedFrame Track(const SegmentedFrame& frame);
@@ -147,41 +148,39 @@ class SequentialPipeline {
   // record's segmentation fields.
   TrackedFrame Track(const SegmentedFrame& frame, const FrontendMaskProvider& masks);
 
-  // The scale and pose stage: appends the frame's pose rows and record, flushed, so that a
-  // run stopped at frame k leaves the rows of frames before k intact. Frames before the first
-  // valid scale wait (PipelineOptions::max_frames_before_first_scale) and are written with
-  // the first scaled frame or by Finish; their returned record says "unscaled". In keyframe
-  // mode every frame waits for the back end (rows are written as its window moves on) and the
-  // returned record says "waiting".
+  // The scale and pose stage: hands the frame to the output once its pose is final. Frames
+  // before the first valid scale wait (PipelineOptions::max_frames_before_first_scale) and go
+  // out with the first scaled frame or with Finish; their returned record says "unscaled". In
+  // keyframe mode every frame waits for the back end (frames go out as its window moves on)
+  // and the returned record says "waiting". A pose the trajectory readers would reject (not
+  // finite, or beyond kMaxTranslationM) never reaches the output: Error names the frame.
   FrameRecord Integrate(TrackedFrame tracked);
 
-  // Called with each frame's record once its rows are written, in frame order (a frame that
-  // waits for the first scale later than the call of Integrate that took it).
-  void SetWrittenCallback(std::function<void(const FrameRecord&)> on_written) {
-    on_written_ = std::move(on_written);
-  }
+  // Receives each finished frame, in frame order (a frame that waits for the first scale
+  // later than the call of Integrate that took it). Without one the frames are dropped.
+  void SetOutput(FrameOutput output) { output_ = std::move(output); }
 
-  // Writes the frames still waiting for a first scale, with unit steps. Call it after the
-  // last frame (also after a stop or an error); the destructor calls it again, which does
-  // nothing the second time.
+  // Hands on the frames still waiting (for a first scale, or in the keyframe back end's
+  // window). Call it after the last frame, and after a stop or an error so that the frames
+  // already taken are not lost; a second call does nothing.
   void Finish();
-  ~SequentialPipeline();
 
   // The columns after FrameRecordCsvHeader() in OUT/frames.csv: the scale source's, or in
   // keyframe mode the back end's (MappedFrameCsvHeader).
   std::string DiagnosticsCsvHeader() const;
 
  private:
-  // A frame's pose from the integrator, and its rows written. `backfilled`: the length is
+  // A frame's pose from the integrator, handed to the output. `backfilled`: the length is
   // the back-filled one of a frame that waited for the first scale.
-  void ApplyAndWrite(FrameRecord record, const TwoViewMotion& motion, const ScaleResult& scale,
-                     bool backfilled);
-  // Writes the waiting frames: back-filled from the first scaled step's length and parallax,
+  void ApplyAndOutput(FrameRecord record, const TwoViewMotion& motion, const ScaleResult& scale,
+                      bool backfilled);
+  // Hands on the waiting frames: back-filled from the first scaled step's length and parallax,
   // or without a scale (unit steps) when `first_length_m` is 0.
-  void WriteWaitingFrames(double first_length_m, double first_parallax_px);
+  void OutputWaitingFrames(double first_length_m, double first_parallax_px);
   // Keyframe mode: the record of a frame the back end has finished, with its pose.
-  void WriteMappedFrame(const MappedFrame& mapped);
-  void WriteRows(const FrameRecord& record, const Rigid3d& world_from_cam);
+  void OutputMappedFrame(const MappedFrame& mapped);
+  // Checks the pose (CheckPoseToOutput) and hands the frame to the output.
+  void Output(const FrameRecord& record, const Rigid3d& world_from_cam);
 
   struct WaitingFrame {
     FrameRecord record;
@@ -196,16 +195,10 @@ class SequentialPipeline {
   PoseIntegrator integrator_;
   int max_waiting_frames_ = 0;
   std::vector<WaitingFrame> waiting_;
-  std::function<void(const FrameRecord&)> on_written_;
+  FrameOutput output_;
   bool stopped_waiting_ = false;
   size_t position_ = 0;
   cv::Mat prev_road_mask_;
-  std::string poses_path_;
-  std::string tum_path_;
-  std::string records_path_;
-  std::ofstream poses_;
-  std::ofstream tum_;
-  std::ofstream records_;
 };
 
 // Mean per-stage times and counts over a run.
@@ -242,10 +235,11 @@ struct RunSummary {
 };
 
 // Reads every frame of `source` through a SequentialPipeline without segmentation, writing
-// to `out_dir`; calls `on_frame` after each frame. Returns the summary. (RunPipeline in
+// its files to `out_dir` (RunOutputFiles); calls `on_frame` after each frame. Returns the
+// summary. (RunPipeline in
 // run_pipeline.h adds segmentation and threads.)
 RunSummary RunSequentialPipeline(FrameSource& source, ScaleSource& scale,
                                  const PipelineOptions& options, const std::string& out_dir,
-                                 const std::function<void(const FrameRecord&)>& on_frame = {});
+                                 const FrameOutput& on_frame = {});
 
 }  // namespace roadscale

@@ -5,9 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include "roadscale/testing/temp_dir.h"
-#include "roadscale/util/error.h"
-
 namespace roadscale {
 namespace {
 
@@ -39,18 +36,6 @@ TEST(SequentialPipeline, RecordsTheRoadPixelsAndTheTracksOnTheRoad) {
   SetRoadMask(cv::Mat(), &without);
   EXPECT_EQ(without.record.road_mask_px, -1);
   EXPECT_EQ(without.record.road_tracks, -1);
-}
-
-TEST(SequentialPipeline, RejectsAnOutputFolderThatCannotBeCreated) {
-  testing::TempDir dir;
-  const std::string blocker = testing::WriteTextFile(dir.File("file"), "x");
-  CameraSetup camera;
-  camera.camera = KittiOdometryCamera();
-  struct NoScale : ScaleSource {
-    std::string Name() const override { return "none"; }
-    ScaleResult StepLength(const ScaleQuery&) override { return {}; }
-  } scale;
-  EXPECT_THROW([&] { SequentialPipeline pipeline(camera, scale, {}, blocker + "/out"); }(), Error);
 }
 
 TEST(RunSummary, CountsTheKeyframesAndTheirRoadAlignments) {
