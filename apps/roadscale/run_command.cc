@@ -16,12 +16,12 @@
 #include "roadscale/frontend/feature_detector.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/odometry/odometry_config.h"
 #include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/pipeline/oracle_scale_source.h"
 #include "roadscale/pipeline/road_scale_source.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/run_report.h"
-#include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
 
@@ -34,31 +34,20 @@ namespace {
 
 void Note(const std::string& text) { std::cerr << "roadscale: note: " << text << '\n'; }
 
-// The segmenter the config asks for; updates config->segmentation.model to what was used,
-// so that config_used.yaml repeats the run.
-std::unique_ptr<Segmenter> MakeRunSegmenter(RunConfig* config) {
+// The shared network's model YAML for "default", or no segmentation (with a note) when its
+// files are not there; config_used.yaml then says what was used.
+void ResolveDefaultModel(RunConfig* config) {
   SegmentationOptions& options = config->segmentation;
-  if (!config->labels.empty()) {
-    SegmentationModel model;
-    model.yaml_path = config->labels;
-    model.backend = SegmentationBackend::kLabelImages;
-    model.label_images.folder = config->labels;
-    model.label_images.ids = LabelIdSpace::kTrainIds;
-    options.Check();
-    return std::make_unique<LabelImageSegmenter>(model, options.masks);
+  if (!config->labels.empty() || options.model != "default") return;
+  const std::string path = DefaultModelPath();
+  try {
+    ReadSegmentationModel(path);
+    options.model = path;
+  } catch (const Error& error) {
+    std::cerr << "roadscale: segmentation off: model not found at " << path << " (" << error.what()
+              << ")\n";
+    options.model = "none";
   }
-  if (options.model == "default") {
-    const std::string path = DefaultModelPath();
-    try {
-      ReadSegmentationModel(path);
-      options.model = path;
-    } catch (const Error& error) {
-      std::cerr << "roadscale: segmentation off: model not found at " << path << " ("
-                << error.what() << ")\n";
-      options.model = "none";
-    }
-  }
-  return MakeSegmenter(options);
 }
 
 std::string Describe(const RunConfig& config, const Segmenter& segmenter) {
@@ -143,18 +132,12 @@ void RunRun(const RunArguments& arguments) {
   config.camera.h0 = camera.h0;
   config.camera.SetDistortion(camera.distortion);
 
-  const std::unique_ptr<Segmenter> segmenter = MakeRunSegmenter(&config);
-  // More copies for the other segmentation threads: a network's inference is the slowest
-  // stage. Masks reused over frames (`every` > 1) need the frames in turn on one copy.
-  std::vector<std::unique_ptr<Segmenter>> more_segmenters;
-  std::vector<Segmenter*> segmenters = {segmenter.get()};
-  const bool network = config.labels.empty() && config.segmentation.model != "none";
-  if (network && config.segmentation.every == 1) {
-    for (int worker = 1; worker < config.segmentation.workers; ++worker) {
-      more_segmenters.push_back(MakeRunSegmenter(&config));
-      segmenters.push_back(more_segmenters.back().get());
-    }
-  }
+  ResolveDefaultModel(&config);
+  const std::vector<std::unique_ptr<Segmenter>> owned_segmenters = MakeConfigSegmenters(config);
+  NoSegmenter no_segmentation;
+  std::vector<Segmenter*> segmenters = Pointers(owned_segmenters);
+  if (segmenters.empty()) segmenters.push_back(&no_segmentation);
+  Segmenter* segmenter = segmenters.front();
   if (const auto* files = dynamic_cast<const ImageFileSequence*>(source.get())) {
     std::vector<std::string> names;
     for (const std::string& path : files->image_paths()) {
@@ -181,8 +164,7 @@ void RunRun(const RunArguments& arguments) {
     scale_options.camera_height = camera.h0;
     scale_source = std::make_unique<RoadScaleSource>(camera.camera, scale_options);
   }
-  config.pipeline.road_selection = config.scale;
-  config.pipeline.road_selection.camera_height = camera.h0;
+  const OdometryOptions odometry = OdometryOptionsFromConfig(config, camera);
   const bool keyframe_mode = config.pipeline.mapping.mode == MappingOptions::Mode::kKeyframe;
 
   const std::string config_path =
@@ -232,11 +214,10 @@ void RunRun(const RunArguments& arguments) {
   PipelineRunResult result;
   {
     InterruptScope interrupt_scope;
-    RunPipelineOptions run_options;
+    RunPipelineOptions run_options = odometry.run;
     run_options.threaded = !arguments.sequential;
-    run_options.opencv_threads = config.segmentation.dnn_threads;
     try {
-      result = RunPipeline(*source, segmenters, *scale_source, config.pipeline, arguments.out,
+      result = RunPipeline(*source, segmenters, *scale_source, odometry.pipeline, arguments.out,
                            run_options, on_frame, &InterruptScope::interrupted());
     } catch (const Error&) {
       if (progress) std::fprintf(stderr, "\n");
