@@ -18,6 +18,7 @@ PACKAGES=(
   libopencv-dev libeigen3-dev libceres-dev libyaml-cpp-dev libcli11-dev
   libspdlog-dev libfmt-dev nlohmann-json3-dev libcairo2-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  pybind11-dev python3-dev python3-numpy python3-opencv  # the Python module and its test
   slurm-wlm munge  # roadscale batch's live Slurm test (tests/batch_slurm_test.sh)
 )
 

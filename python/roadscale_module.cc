@@ -1,0 +1,163 @@
+// The `roadscale` Python module: roadscale::Odometry for a program that has its frames as
+// numpy arrays. Built when pybind11 and Python's headers are there (scripts/setup.sh installs
+// them); README, "Use it as a library".
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "roadscale/io/camera_setup.h"
+#include "roadscale/odometry/odometry.h"
+#include "roadscale/odometry/odometry_config.h"
+#include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/util/error.h"
+
+namespace py = pybind11;
+
+namespace roadscale {
+namespace {
+
+CameraSetup CameraFrom(const py::object& camera) {
+  if (py::isinstance<py::str>(camera)) return ReadCameraYaml(camera.cast<std::string>());
+  if (!py::isinstance<py::dict>(camera)) {
+    throw Error("camera: give a camera YAML's path or a dict of fx, fy, cx, cy, width, height, h0");
+  }
+  const py::dict values = camera.cast<py::dict>();
+  const auto value = [&](const char* key) {
+    if (!values.contains(key)) throw Error(std::string("camera: no '") + key + "'");
+    return values[key];
+  };
+  CameraSetup setup;
+  setup.camera.fx = value("fx").cast<double>();
+  setup.camera.fy = value("fy").cast<double>();
+  setup.camera.cx = value("cx").cast<double>();
+  setup.camera.cy = value("cy").cast<double>();
+  setup.camera.width = value("width").cast<int>();
+  setup.camera.height = value("height").cast<int>();
+  setup.h0 = value("h0").cast<double>();
+  setup.Check();
+  return setup;
+}
+
+// A finished frame as Python sees it.
+py::dict FrameDict(const FrameRecord& record, const Rigid3d& world_from_cam) {
+  py::array_t<double> pose({4, 4});
+  auto cells = pose.mutable_unchecked<2>();
+  for (int row = 0; row < 4; ++row) {
+    for (int col = 0; col < 4; ++col) cells(row, col) = world_from_cam.matrix()(row, col);
+  }
+  py::dict frame;
+  frame["index"] = record.index;
+  frame["timestamp"] = record.timestamp;
+  frame["status"] = record.status;
+  frame["step_length_m"] = record.step_length_m;
+  frame["keyframe"] = record.keyframe;
+  frame["world_from_cam"] = pose;
+  return frame;
+}
+
+class PythonOdometry {
+ public:
+  PythonOdometry(const py::object& camera, const std::string& config_path,
+                 const std::string& labels, const std::string& model, bool threaded) {
+    RunConfig config;
+    if (!config_path.empty()) ReadRunConfig(config_path, &config);
+    // "default" names the command line's shared network, which a module cannot find.
+    if (config.segmentation.model == "default") config.segmentation.model = "none";
+    if (!model.empty()) config.segmentation.model = model;
+    if (!labels.empty()) config.labels = labels;
+    OdometryOptions options = OdometryOptionsFromConfig(config, CameraFrom(camera));
+    options.run.threaded = threaded;
+    segmenters_ = MakeConfigSegmenters(config);
+    odometry_ = std::make_unique<Odometry>(options, Pointers(segmenters_),
+                                           [this](const FrameRecord& record, const Rigid3d& pose) {
+                                             const std::lock_guard<std::mutex> lock(mutex_);
+                                             finished_.emplace_back(record, pose);
+                                           });
+  }
+
+  py::list Track(const py::array_t<std::uint8_t, py::array::c_style>& image, double timestamp,
+                 const std::string& name) {
+    if (image.ndim() != 2 && !(image.ndim() == 3 && image.shape(2) == 3)) {
+      throw Error("track: the image must be H x W (grey) or H x W x 3 (BGR), uint8");
+    }
+    const cv::Mat view(static_cast<int>(image.shape(0)), static_cast<int>(image.shape(1)),
+                       image.ndim() == 2 ? CV_8UC1 : CV_8UC3,
+                       const_cast<std::uint8_t*>(image.data()));
+    {
+      const py::gil_scoped_release release;
+      odometry_->Track(view, timestamp, name);
+    }
+    return TakeFinished();
+  }
+
+  py::list Finish() {
+    {
+      const py::gil_scoped_release release;
+      summary_ = odometry_->Finish().summary.Format();
+    }
+    return TakeFinished();
+  }
+
+  const std::string& summary() const { return summary_; }
+
+ private:
+  py::list TakeFinished() {
+    std::vector<std::pair<FrameRecord, Rigid3d>> finished;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      finished.swap(finished_);
+    }
+    py::list frames;
+    for (const auto& [record, pose] : finished) frames.append(FrameDict(record, pose));
+    return frames;
+  }
+
+  std::vector<std::unique_ptr<Segmenter>> segmenters_;
+  std::mutex mutex_;
+  std::vector<std::pair<FrameRecord, Rigid3d>> finished_;
+  std::string summary_;
+  // Last: its threads stop before the members they write to go.
+  std::unique_ptr<Odometry> odometry_;
+};
+
+}  // namespace
+}  // namespace roadscale
+
+PYBIND11_MODULE(roadscale, module) {
+  using roadscale::PythonOdometry;
+  module.doc() =
+      "roadscale: metric monocular visual odometry, scaled by the road and the "
+      "camera's height above it.";
+  py::register_exception<roadscale::Error>(module, "Error", PyExc_RuntimeError);
+  py::class_<PythonOdometry>(module, "Odometry", R"doc(
+Monocular images in, metric poses out, as `roadscale run` gives them for the same frames.
+
+camera:   a camera YAML's path (Camera: fx fy cx cy width height h0; a run's config_used.yaml
+          works) or a dict with those keys; h0 is the camera's height above the road, metres.
+config:   a run config YAML (config/kitti.yaml lists its keys); "" for the defaults.
+labels:   a folder of label PNGs named like the frames (track's `name`), Cityscapes train ids.
+model:    a segmentation model YAML (config/models/); neither it nor labels: no segmentation.
+threaded: segmentation, frontend, scale and pose on their own threads (the same poses).
+)doc")
+      .def(py::init<const py::object&, const std::string&, const std::string&, const std::string&,
+                    bool>(),
+           py::arg("camera"), py::arg("config") = "", py::arg("labels") = "", py::arg("model") = "",
+           py::arg("threaded") = true)
+      .def("track", &PythonOdometry::Track, py::arg("image"), py::arg("timestamp"),
+           py::arg("name") = "",
+           "Hands in the next frame (uint8, H x W grey or H x W x 3 BGR; timestamps in seconds, "
+           "increasing; `name` the image file for label PNGs). Returns the frames whose poses "
+           "became final since the last call: dicts of index, timestamp, status, "
+           "step_length_m, keyframe and world_from_cam (4 x 4, metres; frame 0 is the world).")
+      .def("finish", &PythonOdometry::Finish,
+           "Processes what is left and returns the last finished frames.")
+      .def_property_readonly("summary", &PythonOdometry::summary,
+                             "The run's summary once finish() has returned.");
+}
