@@ -4,7 +4,8 @@
 #   synth:  a 30-frame synthetic street; its ground truth shrunk to 0.3 times (KITTI rows, all
 #           frames) and, from that run's metric output, every 3rd pose at half scale (TUM,
 #           keyframes associated by time): both come back with one output row per input pose,
-#           one rescale.csv row per step, and a length ratio within 5 % of the truth;
+#           one rescale.csv row per step, and a length ratio within 5 % of the truth; the
+#           exact input is said to agree with the road, one with steps 20 % off is not;
 #   errors: more poses than frames, a timestamp matching no frame, an unknown row format, no
 #           input, --images without a camera: each fails with one line saying what is wrong.
 set -euo pipefail
@@ -43,6 +44,29 @@ if [[ "$mode" == "synth" ]]; then
   expect_line "$out/all/rescale.csv" '^pose,frame_a,frame_b,timestamp,status,.*,total_ms$'
   expect_line "$out/all/rescale.csv" '^29,28,29,[^,]+,"(ok|held)",'
   [[ "$(grep -c ',"ok",' "$out/all/rescale.csv")" -ge 20 ]] || fail "fewer than 20 road-scaled steps"
+  # An exact input: its steps agree with the road within the fixes' noise, and it is said.
+  expect_line "$out/log.txt" "^Agreement: "
+  expect_line "$out/log.txt" "warning: the input's step lengths agree with the road"
+
+  # Each step's length off by up to 20 % (directions kept): the default takes the road's
+  # lengths without a warning; --smooth-ratio is told that it keeps the errors.
+  awk 'BEGIN { srand(7) }
+       { f = 0.3 * (1 + 0.4 * (rand() - 0.5))
+         if (NR > 1) { x += f * ($4 - px); y += f * ($8 - py); z += f * ($12 - pz) }
+         px = $4; py = $8; pz = $12; $4 = x + 0; $8 = y + 0; $12 = z + 0; print }' \
+    "$out/data/poses/00.txt" >"$out/jitter.txt"
+  "$roadscale" rescale --trajectory "$out/jitter.txt" --kitti "$sequence" \
+    --labels "$sequence/semantic" --out "$out/jitter" >"$out/log.txt" 2>&1 ||
+    fail "rescale of the jittered input failed: $(cat "$out/log.txt")"
+  expect_line "$out/log.txt" "^Agreement: "
+  if grep -q "warning: the input's step lengths agree" "$out/log.txt"; then
+    fail "a jittered input was taken for one as good as the road: $(cat "$out/log.txt")"
+  fi
+  expect_ratio_near_one "$out/log.txt"
+  "$roadscale" rescale --trajectory "$out/jitter.txt" --kitti "$sequence" \
+    --labels "$sequence/semantic" --smooth-ratio --out "$out/jitter_smooth" >"$out/log.txt" 2>&1 ||
+    fail "rescale --smooth-ratio of the jittered input failed: $(cat "$out/log.txt")"
+  expect_line "$out/log.txt" "warning: the input's step lengths vary by about .* --smooth-ratio keeps"
 
   # Keyframes: every 3rd pose of the metric output, at half scale, as TUM rows.
   awk 'NR % 3 == 1 { $2 *= 0.5; $3 *= 0.5; $4 *= 0.5; print }' "$out/all/poses_tum.txt" \

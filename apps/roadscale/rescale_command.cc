@@ -17,6 +17,7 @@
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/pipeline/rescale_agreement.h"
 #include "roadscale/pipeline/trajectory_rescaler.h"
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/make_segmenter.h"
@@ -131,6 +132,29 @@ std::string SummaryLine(const std::string& name, const TrajectoryEvaluation& eva
   return line.str();
 }
 
+// Says how the input's step lengths compare with the road's fixes, and warns when the chosen
+// ratio is the one that loses (MeasureInputAgreement).
+void ReportAgreement(const InputAgreement& agreement, bool step_own_ratio) {
+  const auto percent = [](double log_ratio) { return Fixed(100.0 * log_ratio, 1) + " %"; };
+  std::cout << "Agreement:  the input's steps against the road vary " +
+                   percent(agreement.step_spread) +
+                   " from step to step, the road fixes' own "
+                   "noise is " +
+                   percent(agreement.fix_noise) + " ("
+            << agreement.step_pairs << " and " << agreement.fix_pairs << " steps)\n";
+  if (agreement.InputAsGoodAsTheRoad() && step_own_ratio) {
+    std::cerr << "roadscale: warning: the input's step lengths agree with the road to within "
+                 "the road fixes' own noise: taking each step's own road ratio adds that noise "
+                 "to a good input; --smooth-ratio keeps its lengths up to a slowly varying "
+                 "scale\n";
+  } else if (!agreement.InputAsGoodAsTheRoad() && !step_own_ratio) {
+    std::cerr << "roadscale: warning: the input's step lengths vary by about "
+              << percent(agreement.InputStepError())
+              << " a step beyond the road fixes' noise: --smooth-ratio keeps those errors, "
+                 "the default takes each step's own road ratio\n";
+  }
+}
+
 void RunRescale(const RescaleArguments& arguments) {
   TrajectoryRescalerOptions options;
   if (!arguments.config.empty()) {
@@ -202,6 +226,7 @@ void RunRescale(const RescaleArguments& arguments) {
   TrajectoryRescaler rescaler(source->camera().camera, external, pose_frames, options);
   Trajectory rescaled;
   std::map<RescaleStatus, int> counts;
+  std::vector<RescaledPose> measured;  // without their point lists, for MeasureInputAgreement
   double total_ms = 0.0;
   const InterruptScope interrupt_scope;
   const auto on_pose = [&](const RescaledPose& pose) {
@@ -211,6 +236,8 @@ void RunRescale(const RescaleArguments& arguments) {
       WriteRow(csv_file, out / "rescale.csv", FormatRescaleCsv(pose));
       ++counts[pose.status];
       total_ms += pose.total_ms;
+      measured.push_back(pose);
+      measured.back().estimate = ScaleEstimate();
     }
     rescaled.world_from_cam.push_back(pose.world_from_cam);
     rescaled.timestamps.push_back(pose.timestamp);
@@ -233,6 +260,9 @@ void RunRescale(const RescaleArguments& arguments) {
   if (counts[RescaleStatus::kUnscaled] > 0) {
     std::cerr << "roadscale: warning: no road plane was found in any step: the trajectory keeps "
                  "the input's (unscaled) step lengths\n";
+  }
+  if (const std::optional<InputAgreement> agreement = MeasureInputAgreement(measured)) {
+    ReportAgreement(*agreement, options.step_own_ratio);
   }
   std::cout << "Poses:      " << (out / "poses_kitti.txt").string() << ", "
             << (out / "poses_tum.txt").string() << '\n'

@@ -287,6 +287,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   step.external_length = b_from_a.translation().norm();
   step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
   step.alignment_ratio = std::numeric_limits<double>::quiet_NaN();
+  step.points_ratio = std::numeric_limits<double>::quiet_NaN();
 
   const size_t frame_a = pose_frames_[pose - 1];
   std::vector<int64_t> ids;
@@ -360,10 +361,11 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
       estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), prev_road_mask_);
   step.alignment_ratio =
       AlignRoad(image, road_mask, MakeRigid3d(rotation, direction), step.external_length);
-  if (std::isfinite(step.alignment_ratio) || step.estimate.status == ScaleStatus::kOk) {
-    const double tracks_ratio = step.estimate.status == ScaleStatus::kOk
-                                    ? step.estimate.raw_scale / step.external_length
-                                    : std::numeric_limits<double>::quiet_NaN();
+  if (step.estimate.status == ScaleStatus::kOk) {
+    step.points_ratio = step.estimate.raw_scale / step.external_length;
+  }
+  if (std::isfinite(step.alignment_ratio) || std::isfinite(step.points_ratio)) {
+    const double tracks_ratio = step.points_ratio;
     // Two measurements of the same plane with errors of their own: their geometric mean beat
     // either alone on KITTI 00 and was between them on the rendered street
     // (docs/benchmarks.md, "Rescale").
@@ -467,7 +469,7 @@ std::string RescaleCsvHeader() {
   return "pose,frame_a,frame_b,timestamp,status,detail,external_length,raw_ratio,ratio,"
          "metric_length,tracks,pairs,refined,refinement_rotation_deg,refinement_direction_deg,"
          "triangulated,preselected,after_vote,after_road_model,ransac_inliers,plane_h,"
-         "alignment_ratio,segmentation_ms,tracking_ms,detection_ms,scale_ms,total_ms";
+         "alignment_ratio,points_ratio,segmentation_ms,tracking_ms,detection_ms,scale_ms,total_ms";
 }
 
 std::string FormatRescaleCsv(const RescaledPose& pose) {
@@ -484,6 +486,8 @@ std::string FormatRescaleCsv(const RescaledPose& pose) {
   if (e.status == ScaleStatus::kOk) row << e.plane.height;
   row << ',';
   if (std::isfinite(pose.alignment_ratio)) row << pose.alignment_ratio;
+  row << ',';
+  if (std::isfinite(pose.points_ratio)) row << pose.points_ratio;
   row.precision(4);
   row << ',' << pose.segmentation_ms << ',' << pose.tracking_ms << ',' << pose.detection_ms << ','
       << pose.scale_ms << ',' << pose.total_ms;

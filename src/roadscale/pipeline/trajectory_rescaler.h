@@ -135,8 +135,11 @@ struct RescaledPose {
   double refinement_rotation_deg = 0.0;   // how far the refinement moved the VO's motion
   double refinement_direction_deg = 0.0;  // (0 without refinement)
   ScaleEstimate estimate;                 // counts after each stage of the scale estimator
-  // The road alignment's ratio (metres per VO unit; NaN when it did not run or converge).
+  // The road alignment's ratio (metres per VO unit; NaN when it did not run or converge),
+  // and the selected road points' plane's (NaN without one): raw_ratio is their geometric
+  // mean, or the one that exists.
   double alignment_ratio = std::numeric_limits<double>::quiet_NaN();
+  double points_ratio = std::numeric_limits<double>::quiet_NaN();
 
   // Milliseconds: segmentation of frame b, KLT over the frames a+1..b, detection in frame
   // b, refinement + scale estimate, and the whole step (frame reading included).
