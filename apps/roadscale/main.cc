@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <malloc.h>
+
 #include "roadscale/util/error.h"
 
 #include "commands.h"
@@ -43,9 +45,20 @@ std::string FileSystemErrorText(const std::filesystem::filesystem_error& error) 
   return error.path1().string() + ": " + reason;
 }
 
+// Every frame allocates and frees the same few megabytes (images, pyramids, masks, the
+// network's tensors). glibc serves blocks above 128 KB with mmap and gives freed heap back to
+// the kernel, so each frame paid for those pages again: 11 % of a run's CPU went to page
+// faults (docs/benchmarks.md, "Freed memory kept for the next frame"). Blocks up to 64 MB now
+// come from the heap, and freed heap is kept for reuse up to 512 MB.
+void KeepFreedMemoryForReuse() {
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  KeepFreedMemoryForReuse();
   CLI::App app{
       "roadscale: metric monocular visual odometry. Recovers the absolute scale of a single "
       "car camera's motion every frame from the road plane and the known camera height."};
