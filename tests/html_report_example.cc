@@ -1,7 +1,7 @@
 // Writes an example run report (roadscale/eval/html_report.h) from made-up data, for the
 // check that reports render in a browser (report_render_test.sh) and for the README's
-// screenshot. The numbers imitate a run (a drive with a stop, noisy raw scale, a filtered
-// one, stages losing points, held frames) but come from no pipeline.
+// screenshot (docs/images/report_example.png). The numbers imitate a run (a drive with a stop,
+// noisy raw scale, a filtered one, stages losing points, held frames) but come from no pipeline.
 //
 //   roadscale_html_report_example OUT.html [--no-ground-truth] [--frames N (600)]
 

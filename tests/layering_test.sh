@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The library's folders only include the folders below them (README, Development: util <-
+# The library's folders only include the folders below them (docs/development.md: util <-
 # geometry <- io, frontend, segmentation, scale <- mapping <- pipeline <- odometry, batch;
 # eval and synth are leaves the estimator never includes). A file that includes a folder above its own fails
 # here, naming the file and the include.
