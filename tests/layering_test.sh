@@ -24,7 +24,7 @@ declare -A allowed=(
   [eval]="util geometry io"
   [synth]="util geometry io"
   [pipeline]="util geometry io frontend segmentation scale mapping eval"
-  [odometry]="util geometry io frontend segmentation scale mapping pipeline"
+  [odometry]="util geometry io frontend segmentation scale mapping eval pipeline"
   [batch]="util geometry io frontend segmentation pipeline"
 )
 # A new folder has to take its place in the layers before its code is checked.

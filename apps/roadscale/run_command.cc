@@ -6,23 +6,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
-#include <memory>
-#include <vector>
+#include <string>
+#include <utility>
 
 #include <unistd.h>
 
 #include "roadscale/eval/metrics_json.h"
 #include "roadscale/frontend/feature_detector.h"
-#include "roadscale/io/frame_source.h"
-#include "roadscale/io/trajectory_io.h"
-#include "roadscale/odometry/odometry_config.h"
-#include "roadscale/pipeline/config_yaml.h"
-#include "roadscale/pipeline/oracle_scale_source.h"
-#include "roadscale/pipeline/road_scale_source.h"
-#include "roadscale/pipeline/run_pipeline.h"
-#include "roadscale/pipeline/run_report.h"
-#include "roadscale/segmentation/segmentation_model.h"
+#include "roadscale/odometry/drive.h"
 #include "roadscale/util/error.h"
 
 #include "commands.h"
@@ -34,41 +27,16 @@ namespace {
 
 void Note(const std::string& text) { std::cerr << "roadscale: note: " << text << '\n'; }
 
-// The shared network's model YAML for "default", or no segmentation (with a note) when its
-// files are not there; config_used.yaml then says what was used.
-void ResolveDefaultModel(RunConfig* config) {
-  SegmentationOptions& options = config->segmentation;
-  if (!config->labels.empty() || options.model != "default") return;
-  const std::string path = DefaultModelPath();
-  try {
-    ReadSegmentationModel(path);
-    options.model = path;
-  } catch (const Error& error) {
-    std::cerr << "roadscale: segmentation off: model not found at " << path << " (" << error.what()
-              << ")\n";
-    options.model = "none";
-  }
-}
-
-std::string Describe(const RunConfig& config, const Segmenter& segmenter) {
-  return config.labels.empty() ? segmenter.Description() : "label images in " + config.labels;
-}
-
-}  // namespace
-
-std::string DefaultModelPath() {
-  return (std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
-}
-
-void RunRun(const RunArguments& arguments) {
+// run's options merged over its config file, checked before the output folder is touched.
+DriveSetup DriveSetupOf(const RunArguments& arguments) {
   const int inputs =
       !arguments.kitti.empty() + !arguments.images.empty() + !arguments.video.empty();
   if (inputs != 1) throw Error("give exactly one of --kitti, --images, --video");
   if (!arguments.model.empty() + !arguments.labels.empty() + arguments.no_segmentation > 1) {
     throw Error("give at most one of --model, --labels, --no-segmentation");
   }
-
-  RunConfig config;
+  DriveSetup setup;
+  RunConfig& config = setup.config;
   if (!arguments.config.empty()) ReadRunConfig(arguments.config, &config);
   if (arguments.scale) config.scale_source = *arguments.scale;
   if (arguments.detector) {
@@ -88,197 +56,109 @@ void RunRun(const RunArguments& arguments) {
     throw Error("unknown --scale '" + config.scale_source + "' (expected road or oracle)");
   }
   config.pipeline.Check();
+  const std::string fallback = ResolveDefaultModel(DefaultModelPath(), &config);
+  if (!fallback.empty()) std::cerr << "roadscale: " << fallback << '\n';
 
-  const FolderLock lock = PrepareOutputFolder(arguments.out, "run");
-  FrameSourceOptions source_options;
-  source_options.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
-                        : !arguments.images.empty() ? FrameSourceType::kImageFolder
-                                                    : FrameSourceType::kVideo;
-  source_options.input = !arguments.kitti.empty()    ? arguments.kitti
-                         : !arguments.images.empty() ? arguments.images
-                                                     : arguments.video;
-  source_options.frames = ParseFrameRange(arguments.frames);
-  source_options.h0 = config.camera.h0;
-  source_options.camera_yaml = arguments.camera;
-  if (source_options.camera_yaml.empty() && config.camera.HasIntrinsics() &&
-      source_options.type != FrameSourceType::kKitti) {
-    // The config's Camera block is the camera (the camera reader wants every key, h0 too).
-    CameraSetup setup;
-    setup.camera.fx = *config.camera.fx;
-    setup.camera.fy = *config.camera.fy;
-    setup.camera.cx = *config.camera.cx;
-    setup.camera.cy = *config.camera.cy;
-    setup.camera.width = *config.camera.width;
-    setup.camera.height = *config.camera.height;
-    setup.h0 = config.camera.h0.value_or(1.65);
-    setup.distortion = config.camera.Distortion();
-    source_options.camera_yaml = (std::filesystem::path(arguments.out) / "camera.yaml").string();
-    WriteCameraYaml(source_options.camera_yaml, setup);
-  }
-  if (source_options.type != FrameSourceType::kKitti && source_options.camera_yaml.empty()) {
-    throw Error(
-        "--images and --video need --camera CAM.yaml (or a --config with a Camera: "
-        "block holding fx, fy, cx, cy, width, height)");
-  }
-  const std::unique_ptr<FrameSource> source = OpenFrameSource(source_options);
-  for (const std::string& note : source->notes()) Note(note);
-  const CameraSetup& camera = source->camera();
-  config.camera.fx = camera.camera.fx;
-  config.camera.fy = camera.camera.fy;
-  config.camera.cx = camera.camera.cx;
-  config.camera.cy = camera.camera.cy;
-  config.camera.width = camera.camera.width;
-  config.camera.height = camera.camera.height;
-  config.camera.h0 = camera.h0;
-  config.camera.SetDistortion(camera.distortion);
+  FrameSourceOptions& source = setup.source;
+  source.type = !arguments.kitti.empty()    ? FrameSourceType::kKitti
+                : !arguments.images.empty() ? FrameSourceType::kImageFolder
+                                            : FrameSourceType::kVideo;
+  source.input = !arguments.kitti.empty()    ? arguments.kitti
+                 : !arguments.images.empty() ? arguments.images
+                                             : arguments.video;
+  source.frames = ParseFrameRange(arguments.frames);
+  source.camera_yaml = arguments.camera;
+  setup.out_dir = arguments.out;
+  setup.config_name = arguments.config;
+  return setup;
+}
 
-  ResolveDefaultModel(&config);
-  const std::vector<std::unique_ptr<Segmenter>> owned_segmenters = MakeConfigSegmenters(config);
-  NoSegmenter no_segmentation;
-  std::vector<Segmenter*> segmenters = Pointers(owned_segmenters);
-  if (segmenters.empty()) segmenters.push_back(&no_segmentation);
-  Segmenter* segmenter = segmenters.front();
-  if (const auto* files = dynamic_cast<const ImageFileSequence*>(source.get())) {
-    std::vector<std::string> names;
-    for (const std::string& path : files->image_paths()) {
-      Frame frame;
-      frame.path = path;
-      names.push_back(FrameName(frame));
-    }
-    segmenter->CheckFrames(names, cv::Size(camera.camera.width, camera.camera.height));
-  }
+// The progress line, on a terminal only (logs and CI stay clean).
+class ProgressLine {
+ public:
+  explicit ProgressLine(size_t total) : total_(total), shown_(isatty(STDERR_FILENO) != 0) {}
 
-  const Trajectory* ground_truth = source->ground_truth();
-  std::unique_ptr<ScaleSource> scale_source;
-  if (config.scale_source == "oracle") {
-    if (ground_truth == nullptr) {
-      throw Error(source_options.input +
-                  ": --scale oracle needs ground-truth poses (../../poses/NN.txt beside the "
-                  "sequence folder), and there are none");
-    }
-    scale_source = std::make_unique<OracleScaleSource>(*ground_truth);
-    // The oracle gives each frame pair's length: only the frame-to-frame host asks for them.
-    config.pipeline.mapping.mode = MappingOptions::Mode::kFrameToFrame;
-  } else {
-    ScaleEstimatorOptions scale_options = config.scale;
-    scale_options.camera_height = camera.h0;
-    scale_source = std::make_unique<RoadScaleSource>(camera.camera, scale_options);
-  }
-  const OdometryOptions odometry = OdometryOptionsFromConfig(config, camera);
-  const bool keyframe_mode = config.pipeline.mapping.mode == MappingOptions::Mode::kKeyframe;
-
-  const std::string config_path =
-      (std::filesystem::path(arguments.out) / "config_used.yaml").string();
-  WriteRunConfig(config_path, config);
-  const std::string segmentation_text = Describe(config, *segmenter);
-  std::cout << "Input:  " << source->Describe() << '\n'
-            << "Scale:  " << scale_source->Name()
-            << (config.scale_source == "road" ? " (h0 = " + std::to_string(camera.h0) + " m)"
-                                              : std::string())
-            << '\n'
-            << "Mapping: " << MappingModeName(config.pipeline.mapping.mode)
-            << (keyframe_mode
-                    ? " (window of " + std::to_string(config.pipeline.mapping.window_size) +
-                          " keyframes; rows are written as they leave it)"
-                    : std::string())
-            << '\n'
-            << "Frontend: " << DetectorTypeName(config.pipeline.frontend.tracker.detector.type)
-            << " features\n"
-            << "Segmentation: " << segmentation_text << " (schedule "
-            << SegmentationScheduleModeName(config.pipeline.segmentation_schedule.mode) << ")\n"
-            << std::flush;
-
-  // The progress line, on a terminal only (logs and CI stay clean).
-  const bool progress = isatty(STDERR_FILENO) != 0;
-  const size_t total = source->size();
-  const auto start = std::chrono::steady_clock::now();
-  auto last_print = start;
-  std::vector<FrameRecord> records;
-  std::vector<Rigid3d> world_from_cam;
-  const auto on_frame = [&](const FrameRecord& record, const Rigid3d& pose) {
-    records.push_back(record);
-    world_from_cam.push_back(pose);
-    if (!progress) return;
+  void operator()(const FrameRecord& record, const Rigid3d&) {
+    ++frames_;
+    if (!shown_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - last_print < std::chrono::milliseconds(200) && records.size() != total) return;
-    last_print = now;
-    const double elapsed = std::chrono::duration<double>(now - start).count();
-    const double fps = elapsed > 0.0 ? static_cast<double>(records.size()) / elapsed : 0.0;
-    const double eta = fps > 0.0 ? static_cast<double>(total - records.size()) / fps : 0.0;
+    if (now - last_print_ < std::chrono::milliseconds(200) && frames_ != total_) return;
+    last_print_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double fps = elapsed > 0.0 ? static_cast<double>(frames_) / elapsed : 0.0;
+    const double eta = fps > 0.0 ? static_cast<double>(total_ - frames_) / fps : 0.0;
     std::fprintf(stderr, "\rframe %zu (%zu/%zu)  %.1f fps  step %.3f m (%s)  ETA %.0f s   ",
-                 record.index, records.size(), total, fps, record.step_length_m,
-                 record.status.c_str(), eta);
+                 record.index, frames_, total_, fps, record.step_length_m, record.status.c_str(),
+                 eta);
     std::fflush(stderr);
-  };
+  }
+  // Ends the line (once).
+  void End() {
+    if (shown_ && !ended_) std::fprintf(stderr, "\n");
+    ended_ = true;
+  }
+  size_t frames() const { return frames_; }
 
+ private:
+  size_t total_;
+  bool shown_;
+  bool ended_ = false;
+  size_t frames_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_print_ = start_;
+};
+
+std::string MetricsLine(const TrajectoryEvaluation& e) {
+  return "Metrics: KITTI t_err " +
+         (e.kitti.t_err ? std::to_string(KittiTErrPercent(*e.kitti.t_err)) + " %"
+                        : std::string("n/a (too short)")) +
+         ", ATE(se3) " + std::to_string(e.errors.ate_se3_m) + " m, length ratio " +
+         (e.errors.length_ratio ? std::to_string(*e.errors.length_ratio) : "n/a") + '\n';
+}
+
+}  // namespace
+
+std::string DefaultModelPath() {
+  return (std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
+}
+
+void RunRun(const RunArguments& arguments) {
+  DriveSetup setup = DriveSetupOf(arguments);
+  const FolderLock lock = PrepareOutputFolder(arguments.out, "run");
+  Drive drive(std::move(setup));
+  for (const std::string& note : drive.notes()) Note(note);
+  std::cout << drive.Describe() << std::flush;
+
+  ProgressLine progress(drive.size());
   PipelineRunResult result;
   {
     InterruptScope interrupt_scope;
-    RunPipelineOptions run_options = odometry.run;
-    run_options.threaded = !arguments.sequential;
     try {
-      result = RunPipeline(*source, segmenters, *scale_source, odometry.pipeline, arguments.out,
-                           run_options, on_frame, &InterruptScope::interrupted());
+      result = drive.Run(!arguments.sequential, std::ref(progress), &InterruptScope::interrupted());
     } catch (const Error&) {
-      if (progress) std::fprintf(stderr, "\n");
+      progress.End();
       throw;
     }
   }
-  if (progress) std::fprintf(stderr, "\n");
+  progress.End();
   const std::string poses_path = arguments.out + "/poses_kitti.txt";
   if (result.interrupted) {
-    throw Error("interrupted after " + std::to_string(records.size()) + " frames: " + poses_path +
-                ", poses_tum.txt and frames.csv hold those frames");
+    throw Error("interrupted after " + std::to_string(progress.frames()) +
+                " frames: " + poses_path + ", poses_tum.txt and frames.csv hold those frames");
   }
 
-  RunReportData report;
-  report.title = arguments.title.empty() ? "roadscale run: " + source->Describe() : arguments.title;
-  report.inputs = {
-      {"input", source->Describe()},
-      {"camera",
-       "fx " + std::to_string(camera.camera.fx) + ", " + std::to_string(camera.camera.width) + "x" +
-           std::to_string(camera.camera.height) + ", h0 " + std::to_string(camera.h0) + " m"},
-      {"config", arguments.config.empty() ? "defaults" : arguments.config},
-      {"segmentation", segmentation_text},
-      {"scale", scale_source->Name()},
-      {"mapping", MappingModeName(config.pipeline.mapping.mode)},
-      {"segmented frames",
-       std::to_string(result.summary.segmented_frames) + " of " +
-           std::to_string(result.summary.frames) + " (schedule " +
-           SegmentationScheduleModeName(config.pipeline.segmentation_schedule.mode) + ")"}};
-  report.records = std::move(records);
-  report.scale_diagnostics_header =
-      keyframe_mode ? MappedFrameCsvHeader() : scale_source->DiagnosticsCsvHeader();
-  report.est_world_from_cam = std::move(world_from_cam);
-  report.wall_time_s = result.summary.wall_s;
-  if (ground_truth != nullptr && ground_truth->world_from_cam.size() >= report.records.size()) {
-    Trajectory gt = *ground_truth;
-    gt.world_from_cam.resize(report.records.size());
-    if (gt.timestamps.size() > report.records.size()) gt.timestamps.resize(report.records.size());
-    report.gt_world_from_cam = gt.world_from_cam;
-    WriteKittiTrajectory(arguments.out + "/gt_poses_kitti.txt", gt);
-  }
-  const std::optional<TrajectoryEvaluation> evaluation = EvaluateRun(report);
-  const std::vector<std::string> written = WriteRunReport(arguments.out, report, evaluation);
-  for (const std::string& warning : ScaleWarnings(report.records)) {
+  const Drive::Report report = drive.WriteReport(arguments.title);
+  for (const std::string& warning : report.warnings) {
     std::cerr << "roadscale: warning: " << warning << '\n';
   }
-
   std::cout << result.summary.Format() << "Poses:  " << poses_path << " (and poses_tum.txt)\n"
             << "Frames: " << arguments.out << "/frames.csv\n"
-            << "Config: " << config_path << '\n';
-  if (!report.gt_world_from_cam.empty()) {
+            << "Config: " << arguments.out << "/config_used.yaml\n";
+  if (report.ground_truth_written) {
     std::cout << "Ground truth of these frames: " << arguments.out << "/gt_poses_kitti.txt\n";
   }
-  if (evaluation) {
-    const TrajectoryEvaluation& e = *evaluation;
-    std::cout << "Metrics: KITTI t_err "
-              << (e.kitti.t_err ? std::to_string(KittiTErrPercent(*e.kitti.t_err)) + " %"
-                                : std::string("n/a (too short)"))
-              << ", ATE(se3) " << e.errors.ate_se3_m << " m, length ratio "
-              << (e.errors.length_ratio ? std::to_string(*e.errors.length_ratio) : "n/a") << '\n';
-  }
-  for (const std::string& path : written) std::cout << "Wrote:  " << path << '\n';
+  if (report.evaluation) std::cout << MetricsLine(*report.evaluation);
+  for (const std::string& path : report.written) std::cout << "Wrote:  " << path << '\n';
 }
 
 void RegisterRunCommand(CLI::App& app) {

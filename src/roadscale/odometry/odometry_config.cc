@@ -3,6 +3,7 @@
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/segmentation/segmentation_model.h"
+#include "roadscale/util/error.h"
 
 namespace roadscale {
 
@@ -14,6 +15,19 @@ OdometryOptions OdometryOptionsFromConfig(const RunConfig& config, const CameraS
   options.pipeline.road_selection.camera_height = camera.h0;
   options.run.opencv_threads = config.segmentation.dnn_threads;
   return options;
+}
+
+std::string ResolveDefaultModel(const std::string& default_model, RunConfig* config) {
+  SegmentationOptions& options = config->segmentation;
+  if (!config->labels.empty() || options.model != "default") return "";
+  try {
+    ReadSegmentationModel(default_model);
+    options.model = default_model;
+    return "";
+  } catch (const Error& error) {
+    options.model = "none";
+    return "segmentation off: model not found at " + default_model + " (" + error.what() + ")";
+  }
 }
 
 std::vector<std::unique_ptr<Segmenter>> MakeConfigSegmenters(const RunConfig& config) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "roadscale/io/camera_setup.h"
@@ -14,6 +15,10 @@ namespace roadscale {
 // the camera, as `roadscale run` takes them: the road selection is the config's Scale block
 // at the camera's h0, and OpenCV gets the network's thread count during the run.
 OdometryOptions OdometryOptionsFromConfig(const RunConfig& config, const CameraSetup& camera);
+
+// Resolves Segmentation.model "default" to `default_model` (a model YAML) when that file
+// reads as a model, else to "none"; returns why in that case (the program says it), else "".
+std::string ResolveDefaultModel(const std::string& default_model, RunConfig* config);
 
 // The segmenters a run config asks for: the label images of config.labels, else the model of
 // config.segmentation.model (a model YAML; "default" resolved to a path before) with one copy
