@@ -11,8 +11,9 @@ trap 'rm -rf "$scratch"' EXIT
 # shellcheck source=cli_checks.sh
 source "$(dirname "$0")/cli_checks.sh"
 
-# What each folder's library code may include besides itself. pipeline/ still includes eval/
-# for the run's report: the report moves out of the estimator with the library facade.
+# What each folder's library code may include besides itself. pipeline/ and odometry/ include
+# eval/ for the run's report and metrics (run_report, Drive::WriteReport); the estimator's own
+# folders (frontend, scale, mapping) never do.
 declare -A allowed=(
   [util]=""
   [geometry]="util"
