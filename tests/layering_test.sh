@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The library's folders only include the folders below them (docs/development.md: util <-
 # geometry <- io, frontend, segmentation, scale <- mapping <- pipeline <- odometry, batch;
-# eval and synth are leaves the estimator never includes). A file that includes a folder above its own fails
+# rescale on io, frontend, segmentation, scale; eval and synth are leaves the estimator never
+# includes). A file that includes a folder above its own fails
 # here, naming the file and the include.
 # Usage: layering_test.sh [SOURCE_ROOT]   (default: the repository this script is in)
 set -euo pipefail
@@ -25,6 +26,7 @@ declare -A allowed=(
   [eval]="util geometry io"
   [synth]="util geometry io"
   [pipeline]="util geometry io frontend segmentation scale mapping eval"
+  [rescale]="util geometry io frontend segmentation scale"
   [odometry]="util geometry io frontend segmentation scale mapping eval pipeline"
   [batch]="util geometry io frontend segmentation pipeline"
 )

@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "roadscale/pipeline/trajectory_rescaler.h"
+#include "roadscale/rescale/trajectory_rescaler.h"
 
 namespace roadscale {
 

@@ -1,4 +1,4 @@
-#include "roadscale/pipeline/rescale_agreement.h"
+#include "roadscale/rescale/rescale_agreement.h"
 
 #include <algorithm>
 #include <cmath>

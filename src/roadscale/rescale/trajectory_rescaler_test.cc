@@ -1,4 +1,4 @@
-#include "roadscale/pipeline/trajectory_rescaler.h"
+#include "roadscale/rescale/trajectory_rescaler.h"
 
 #include <cmath>
 #include <sstream>

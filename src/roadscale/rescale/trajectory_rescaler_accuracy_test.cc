@@ -14,7 +14,7 @@
 #include "roadscale/eval/trajectory_errors.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
-#include "roadscale/pipeline/trajectory_rescaler.h"
+#include "roadscale/rescale/trajectory_rescaler.h"
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/synth/scene_writer.h"
 #include "roadscale/synth/synthetic_scene.h"
