@@ -1,5 +1,5 @@
 // The run config (--config): ReadRunConfig, and writing the result back as config_used.yaml.
-#include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/util/error.h"
 
 #include "fuzz_input.h"

@@ -12,10 +12,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/io/camera_setup.h"
 #include "roadscale/odometry/odometry.h"
 #include "roadscale/odometry/odometry_config.h"
-#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/util/error.h"
 
 namespace py = pybind11;

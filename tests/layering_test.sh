@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The library's folders only include the folders below them (docs/development.md: util <-
-# geometry <- io, frontend, segmentation, scale <- mapping <- pipeline <- odometry, batch;
-# rescale on io, frontend, segmentation, scale; eval and synth are leaves the estimator never
-# includes). A file that includes a folder above its own fails
-# here, naming the file and the include.
+# geometry <- io, frontend, segmentation, scale <- mapping <- pipeline <- config, report <-
+# odometry, batch; rescale on io, frontend, segmentation, scale; eval and synth are leaves the
+# estimator never includes). A file that includes a folder above its own fails here, naming
+# the file and the include.
 # Usage: layering_test.sh [SOURCE_ROOT]   (default: the repository this script is in)
 set -euo pipefail
 root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
@@ -12,9 +12,9 @@ trap 'rm -rf "$scratch"' EXIT
 # shellcheck source=cli_checks.sh
 source "$(dirname "$0")/cli_checks.sh"
 
-# What each folder's library code may include besides itself. pipeline/ and odometry/ include
-# eval/ for the run's report and metrics (run_report, Drive::WriteReport); the estimator's own
-# folders (frontend, scale, mapping) never do.
+# What each folder's library code may include besides itself. report/ and odometry/ include
+# eval/ for the run's report and metrics; the estimator (frontend, scale, mapping, pipeline)
+# never does.
 declare -A allowed=(
   [util]=""
   [geometry]="util"
@@ -25,10 +25,12 @@ declare -A allowed=(
   [mapping]="util geometry frontend scale"
   [eval]="util geometry io"
   [synth]="util geometry io"
-  [pipeline]="util geometry io frontend segmentation scale mapping eval"
+  [pipeline]="util geometry io frontend segmentation scale mapping"
+  [config]="util geometry io frontend segmentation scale mapping pipeline"
+  [report]="util geometry io eval pipeline"
   [rescale]="util geometry io frontend segmentation scale"
-  [odometry]="util geometry io frontend segmentation scale mapping eval pipeline"
-  [batch]="util geometry io frontend segmentation pipeline"
+  [odometry]="util geometry io frontend segmentation scale mapping eval pipeline config report"
+  [batch]="util geometry io frontend segmentation pipeline config"
 )
 # A new folder has to take its place in the layers before its code is checked.
 for dir in "$root"/src/roadscale/*/; do

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
-#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/rescale/rescale_agreement.h"
 #include "roadscale/rescale/trajectory_rescaler.h"
 #include "roadscale/segmentation/label_image_segmenter.h"

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"

@@ -10,7 +10,7 @@
 #include "roadscale/odometry/odometry_config.h"
 #include "roadscale/pipeline/oracle_scale_source.h"
 #include "roadscale/pipeline/road_scale_source.h"
-#include "roadscale/pipeline/run_report.h"
+#include "roadscale/report/run_report.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {

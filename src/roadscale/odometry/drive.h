@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/odometry/odometry.h"
 #include "roadscale/odometry/odometry_config.h"
-#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/pipeline/run_pipeline.h"
 #include "roadscale/pipeline/scale_source.h"
 #include "roadscale/segmentation/segmenter.h"

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/io/camera_setup.h"
 #include "roadscale/odometry/odometry.h"
-#include "roadscale/pipeline/config_yaml.h"
 #include "roadscale/segmentation/segmenter.h"
 
 namespace roadscale {

@@ -1,4 +1,4 @@
-#include "roadscale/pipeline/run_report.h"
+#include "roadscale/report/run_report.h"
 
 #include <algorithm>
 #include <cmath>

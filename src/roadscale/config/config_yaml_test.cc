@@ -1,4 +1,4 @@
-#include "roadscale/pipeline/config_yaml.h"
+#include "roadscale/config/config_yaml.h"
 
 #include <fstream>
 #include <iterator>
