@@ -13,6 +13,8 @@
 #include <pybind11/stl.h>
 
 #include "roadscale/config/config_yaml.h"
+#include "roadscale/eval/metrics_json.h"
+#include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/camera_setup.h"
 #include "roadscale/odometry/odometry.h"
 #include "roadscale/odometry/odometry_config.h"
@@ -62,6 +64,34 @@ py::dict FrameDict(const FrameRecord& record, const Rigid3d& world_from_cam) {
   return frame;
 }
 
+// Poses as an (N, 4, 4) or (N, 3, 4) array of world_from_cam.
+std::vector<Rigid3d> PosesFrom(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& poses, const char* name) {
+  if (poses.ndim() != 3 || poses.shape(2) != 4 || (poses.shape(1) != 3 && poses.shape(1) != 4)) {
+    throw Error(std::string(name) + ": give an (N, 4, 4) or (N, 3, 4) array of poses");
+  }
+  const auto cells = poses.unchecked<3>();
+  std::vector<Rigid3d> out;
+  for (py::ssize_t k = 0; k < poses.shape(0); ++k) {
+    Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 4; ++col) matrix(row, col) = cells(k, row, col);
+    }
+    Rigid3d pose;
+    pose.matrix() = matrix;
+    out.push_back(pose);
+  }
+  return out;
+}
+
+// `roadscale eval --json`'s dict for paired poses.
+py::object Evaluate(const py::array_t<double, py::array::c_style | py::array::forcecast>& gt,
+                    const py::array_t<double, py::array::c_style | py::array::forcecast>& est) {
+  const TrajectoryEvaluation evaluation =
+      EvaluateTrajectory(PosesFrom(gt, "gt"), PosesFrom(est, "est"));
+  return py::module_::import("json").attr("loads")(FormatMetricsJson(evaluation));
+}
+
 class PythonOdometry {
  public:
   PythonOdometry(const py::object& camera, const std::string& config_path,
@@ -107,6 +137,18 @@ class PythonOdometry {
 
   const std::string& summary() const { return summary_; }
 
+  py::array_t<double> Poses() const {
+    py::array_t<double> poses(
+        {static_cast<py::ssize_t>(all_poses_.size()), py::ssize_t{4}, py::ssize_t{4}});
+    auto cells = poses.mutable_unchecked<3>();
+    for (size_t k = 0; k < all_poses_.size(); ++k) {
+      for (int row = 0; row < 4; ++row) {
+        for (int col = 0; col < 4; ++col) cells(k, row, col) = all_poses_[k].matrix()(row, col);
+      }
+    }
+    return poses;
+  }
+
  private:
   py::list TakeFinished() {
     std::vector<std::pair<FrameRecord, Rigid3d>> finished;
@@ -115,7 +157,10 @@ class PythonOdometry {
       finished.swap(finished_);
     }
     py::list frames;
-    for (const auto& [record, pose] : finished) frames.append(FrameDict(record, pose));
+    for (const auto& [record, pose] : finished) {
+      frames.append(FrameDict(record, pose));
+      all_poses_.push_back(pose);
+    }
     return frames;
   }
 
@@ -123,6 +168,7 @@ class PythonOdometry {
   std::mutex mutex_;
   std::vector<std::pair<FrameRecord, Rigid3d>> finished_;
   std::string summary_;
+  std::vector<Rigid3d> all_poses_;  // every frame handed to Python so far, in order
   // Last: its threads stop before the members they write to go.
   std::unique_ptr<Odometry> odometry_;
 };
@@ -159,5 +205,10 @@ threaded: segmentation, frontend, scale and pose on their own threads (the same 
       .def("finish", &PythonOdometry::Finish,
            "Processes what is left and returns the last finished frames.")
       .def_property_readonly("summary", &PythonOdometry::summary,
-                             "The run's summary once finish() has returned.");
+                             "The run's summary once finish() has returned.")
+      .def("poses", &PythonOdometry::Poses,
+           "The world_from_cam of every frame returned so far, as an (N, 4, 4) array.");
+  module.def("evaluate", &roadscale::Evaluate, py::arg("gt"), py::arg("est"),
+             "The KITTI devkit metric, ATE, RPE and length ratio of paired poses ((N, 4, 4) or "
+             "(N, 3, 4) arrays of world_from_cam), as `roadscale eval --json` gives them.");
 }

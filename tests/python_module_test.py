@@ -62,6 +62,11 @@ def main():
         travelled = np.linalg.norm(poses[-1][:, 3] - poses[0][:, 3])
         if travelled < 5.0:
             fail("the drive moved only %.2f m" % travelled)
+        if not np.array_equal(odometry.poses()[:, :3], poses):
+            fail("poses() differs from the frames' world_from_cam")
+        metrics = roadscale.evaluate(expected, odometry.poses())
+        if metrics["frames"] != 40 or abs(metrics["length_ratio"] - 1.0) > 1e-9:
+            fail("evaluate() of the run's own poses: %s" % metrics)
         if "Frames: 40" not in odometry.summary:
             fail("summary: %s" % odometry.summary)
     print("python module: %d frames, the run's poses (to %.1e), %.1f m travelled"
