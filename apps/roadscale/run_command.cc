@@ -9,6 +9,7 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <utility>
 
 #include <unistd.h>
@@ -119,6 +120,16 @@ std::string MetricsLine(const TrajectoryEvaluation& e) {
 }  // namespace
 
 std::string DefaultModelPath() {
+  // An installed command takes the model file installed with it (PREFIX/share/roadscale),
+  // not the one of a source tree that may have changed or gone since.
+  std::error_code error;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed =
+        (program.parent_path() / ROADSCALE_DATA_FROM_BIN / kDefaultSegmentationModel)
+            .lexically_normal();
+    if (std::filesystem::exists(installed, error)) return installed.string();
+  }
   return (std::filesystem::path(ROADSCALE_SOURCE_DIR) / kDefaultSegmentationModel).string();
 }
 

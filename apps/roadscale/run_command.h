@@ -18,8 +18,9 @@ struct RunArguments : RunRequest {
 // interrupted (Ctrl-C).
 void RunRun(const RunArguments& arguments);
 
-// The segmentation model YAML run loads when none is named (the shipped ESPNetv2 file); run
-// goes without segmentation when it cannot be read.
+// The segmentation model YAML run loads when none is named (the shipped ESPNetv2 file:
+// PREFIX/share/roadscale/config/models/ beside an installed command, else the source tree's
+// config/models/); run goes without segmentation when it cannot be read.
 std::string DefaultModelPath();
 
 }  // namespace roadscale::cli
