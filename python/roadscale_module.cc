@@ -2,22 +2,28 @@
 // numpy arrays. Built when pybind11 and Python's headers are there (scripts/setup.sh installs
 // them); README, "Use it as a library".
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "roadscale/config/config_yaml.h"
+#include "roadscale/config/rescale_config.h"
 #include "roadscale/eval/metrics_json.h"
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/camera_setup.h"
 #include "roadscale/odometry/odometry.h"
 #include "roadscale/odometry/odometry_config.h"
+#include "roadscale/rescale/trajectory_rescaler.h"
+#include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/util/error.h"
 
 namespace py = pybind11;
@@ -92,6 +98,120 @@ py::object Evaluate(const py::array_t<double, py::array::c_style | py::array::fo
   return py::module_::import("json").attr("loads")(FormatMetricsJson(evaluation));
 }
 
+py::array_t<double> PoseArray(const std::vector<Rigid3d>& poses) {
+  py::array_t<double> array(
+      {static_cast<py::ssize_t>(poses.size()), py::ssize_t{4}, py::ssize_t{4}});
+  auto cells = array.mutable_unchecked<3>();
+  for (size_t k = 0; k < poses.size(); ++k) {
+    for (int row = 0; row < 4; ++row) {
+      for (int col = 0; col < 4; ++col) cells(k, row, col) = poses[k].matrix()(row, col);
+    }
+  }
+  return array;
+}
+
+// An image handed in from Python, without a copy.
+cv::Mat ImageView(const py::array_t<std::uint8_t, py::array::c_style>& image, const char* what) {
+  if (image.ndim() != 2 && !(image.ndim() == 3 && image.shape(2) == 3)) {
+    throw Error(std::string(what) + ": the image must be H x W (grey) or H x W x 3 (BGR), uint8");
+  }
+  return cv::Mat(static_cast<int>(image.shape(0)), static_cast<int>(image.shape(1)),
+                 image.ndim() == 2 ? CV_8UC1 : CV_8UC3, const_cast<std::uint8_t*>(image.data()));
+}
+
+// The segmenter `roadscale rescale` opens: label PNGs (named like the frames), else a model
+// YAML, else none.
+std::unique_ptr<Segmenter> RescaleSegmenter(const std::string& labels, const std::string& model) {
+  if (!labels.empty()) {
+    SegmentationModel label_model;
+    label_model.yaml_path = labels;
+    label_model.backend = SegmentationBackend::kLabelImages;
+    label_model.label_images.folder = labels;
+    return std::make_unique<LabelImageSegmenter>(label_model, MaskOptions());
+  }
+  if (model.empty()) return nullptr;
+  RunConfig config;
+  config.segmentation.model = model;
+  std::vector<std::unique_ptr<Segmenter>> segmenters = MakeConfigSegmenters(config);
+  return segmenters.empty() ? nullptr : std::move(segmenters.front());
+}
+
+// `roadscale rescale` on arrays: another VO's poses and the frames they were made from.
+py::dict Rescale(const py::array_t<double, py::array::c_style | py::array::forcecast>& poses,
+                 const py::iterable& images, const py::object& camera,
+                 const std::string& config_path, const std::string& labels,
+                 const std::string& model, const std::optional<std::vector<size_t>>& pose_frames,
+                 const std::optional<std::vector<double>>& timestamps) {
+  const CameraSetup setup = CameraFrom(camera);
+  TrajectoryRescalerOptions options = RescalerOptionsFromConfig(config_path);
+  options.scale.camera_height = setup.h0;
+  Trajectory external;
+  external.world_from_cam = PosesFrom(poses, "poses");
+  std::vector<size_t> frames_of_poses;
+  if (pose_frames) {
+    frames_of_poses = *pose_frames;
+  } else {
+    for (size_t k = 0; k < external.size(); ++k) frames_of_poses.push_back(k);
+  }
+  TrajectoryRescaler rescaler(setup.camera, external, frames_of_poses, options);
+  std::unique_ptr<Segmenter> segmenter = RescaleSegmenter(labels, model);
+
+  std::vector<Rigid3d> metric;
+  py::list statuses;
+  py::list ratios;
+  const auto take = [&](const std::vector<RescaledPose>& finished) {
+    for (const RescaledPose& pose : finished) {
+      metric.push_back(pose.world_from_cam);
+      statuses.append(RescaleStatusName(pose.status));
+      ratios.append(pose.ratio);
+    }
+  };
+  const SegmentationResult no_segmentation;
+  size_t position = 0;
+  for (const py::handle item : images) {
+    if (position > rescaler.last_frame()) break;
+    if (position >= rescaler.first_frame()) {
+      // The array must outlive the view; the rescaler keeps the frame's image, so it gets a copy.
+      const auto array = item.cast<py::array_t<std::uint8_t, py::array::c_style>>();
+      const cv::Mat image = ImageView(array, "rescale");
+      Frame frame;
+      frame.index = position;
+      frame.timestamp = timestamps && position < timestamps->size()
+                            ? (*timestamps)[position]
+                            : static_cast<double>(position) / kDefaultFrameRateHz;
+      char name[32];
+      std::snprintf(name, sizeof(name), "%06zu", position);
+      frame.path = name;
+      SegmentationResult segmentation;
+      std::vector<RescaledPose> finished;
+      {
+        const py::gil_scoped_release release;
+        if (image.channels() == 3) {
+          cv::cvtColor(image, frame.image, cv::COLOR_BGR2GRAY);
+        } else {
+          frame.image = image.clone();
+        }
+        if (segmenter && rescaler.IsPoseFrame(position)) {
+          segmentation = segmenter->Segment(image, name);
+        }
+        finished = rescaler.AddFrame(frame, segmenter ? segmentation : no_segmentation);
+      }
+      take(finished);
+    }
+    ++position;
+  }
+  if (position <= rescaler.last_frame()) {
+    throw Error("rescale: the last pose is at frame " + std::to_string(rescaler.last_frame()) +
+                " but only " + std::to_string(position) + " images came");
+  }
+  take(rescaler.Finish());
+  py::dict result;
+  result["poses"] = PoseArray(metric);
+  result["status"] = statuses;
+  result["ratio"] = ratios;
+  return result;
+}
+
 class PythonOdometry {
  public:
   PythonOdometry(const py::object& camera, const std::string& config_path,
@@ -114,12 +234,7 @@ class PythonOdometry {
 
   py::list Track(const py::array_t<std::uint8_t, py::array::c_style>& image, double timestamp,
                  const std::string& name) {
-    if (image.ndim() != 2 && !(image.ndim() == 3 && image.shape(2) == 3)) {
-      throw Error("track: the image must be H x W (grey) or H x W x 3 (BGR), uint8");
-    }
-    const cv::Mat view(static_cast<int>(image.shape(0)), static_cast<int>(image.shape(1)),
-                       image.ndim() == 2 ? CV_8UC1 : CV_8UC3,
-                       const_cast<std::uint8_t*>(image.data()));
+    const cv::Mat view = ImageView(image, "track");
     {
       const py::gil_scoped_release release;
       odometry_->Track(view, timestamp, name);
@@ -137,17 +252,7 @@ class PythonOdometry {
 
   const std::string& summary() const { return summary_; }
 
-  py::array_t<double> Poses() const {
-    py::array_t<double> poses(
-        {static_cast<py::ssize_t>(all_poses_.size()), py::ssize_t{4}, py::ssize_t{4}});
-    auto cells = poses.mutable_unchecked<3>();
-    for (size_t k = 0; k < all_poses_.size(); ++k) {
-      for (int row = 0; row < 4; ++row) {
-        for (int col = 0; col < 4; ++col) cells(k, row, col) = all_poses_[k].matrix()(row, col);
-      }
-    }
-    return poses;
-  }
+  py::array_t<double> Poses() const { return PoseArray(all_poses_); }
 
  private:
   py::list TakeFinished() {
@@ -208,6 +313,21 @@ threaded: segmentation, frontend, scale and pose on their own threads (the same 
                              "The run's summary once finish() has returned.")
       .def("poses", &PythonOdometry::Poses,
            "The world_from_cam of every frame returned so far, as an (N, 4, 4) array.");
+  module.def("rescale", &roadscale::Rescale, py::arg("poses"), py::arg("images"), py::arg("camera"),
+             py::arg("config") = "", py::arg("labels") = "", py::arg("model") = "",
+             py::arg("pose_frames") = py::none(), py::arg("timestamps") = py::none(), R"doc(
+Another VO's trajectory given its metric scale from the road, as `roadscale rescale` does.
+
+poses:       the VO's world_from_cam, an (N, 4, 4) or (N, 3, 4) array (any scale).
+images:      the frames, in order, as uint8 arrays (H x W grey or H x W x 3 BGR); any iterable,
+             read up to the last pose's frame.
+camera:      a camera YAML's path or a dict of fx, fy, cx, cy, width, height, h0.
+config:      a run config YAML (its Scale and Mapping blocks), "" for rescale's defaults.
+labels:      a folder of label PNGs named 000000.png, ... by frame; or model: a model YAML.
+pose_frames: the frame of each pose (increasing); default pose i at frame i.
+timestamps:  seconds of each frame; default frame / 10.
+Returns a dict: poses (N, 4, 4) in metres, status and ratio (metres per VO unit) per pose.
+)doc");
   module.def("evaluate", &roadscale::Evaluate, py::arg("gt"), py::arg("est"),
              "The KITTI devkit metric, ATE, RPE and length ratio of paired poses ((N, 4, 4) or "
              "(N, 3, 4) arrays of world_from_cam), as `roadscale eval --json` gives them.");

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The library's folders only include the folders below them (docs/development.md: util <-
 # geometry <- io, frontend, segmentation, scale <- mapping <- pipeline <- config, report <-
-# odometry, batch; rescale on io, frontend, segmentation, scale; eval and synth are leaves the
-# estimator never includes). A file that includes a folder above its own fails here, naming
+# odometry, batch; rescale on io, frontend, segmentation, scale, and config on rescale; eval
+# and synth are leaves the estimator never includes). A file that includes a folder above its own fails here, naming
 # the file and the include.
 # Usage: layering_test.sh [SOURCE_ROOT]   (default: the repository this script is in)
 set -euo pipefail
@@ -26,7 +26,7 @@ declare -A allowed=(
   [eval]="util geometry io"
   [synth]="util geometry io"
   [pipeline]="util geometry io frontend segmentation scale mapping"
-  [config]="util geometry io frontend segmentation scale mapping pipeline"
+  [config]="util geometry io frontend segmentation scale mapping pipeline rescale"
   [report]="util geometry io eval pipeline"
   [rescale]="util geometry io frontend segmentation scale"
   [odometry]="util geometry io frontend segmentation scale mapping eval pipeline config report"

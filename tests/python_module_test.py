@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The Python module against `roadscale run` on the same rendered frames: the same poses.
+"""The Python module against the command line on the same rendered frames: Odometry gives
+`roadscale run`'s poses, rescale() `roadscale rescale`'s.
 
 Usage: python_module_test.py BUILD_DIR   (BUILD_DIR holds roadscale and python/roadscale*.so)
 """
@@ -69,8 +70,47 @@ def main():
             fail("evaluate() of the run's own poses: %s" % metrics)
         if "Frames: 40" not in odometry.summary:
             fail("summary: %s" % odometry.summary)
+        check_rescale(roadscale, cli, data, sequence, labels, config, scratch)
     print("python module: %d frames, the run's poses (to %.1e), %.1f m travelled"
           % (len(frames), difference, travelled))
+
+
+def check_rescale(roadscale, cli, data, sequence, labels, camera, scratch):
+    """The true trajectory at a third of its size, rescaled by the module and by the CLI."""
+    truth = np.loadtxt(os.path.join(data, "poses", "00.txt")).reshape(-1, 3, 4)
+    shrunk = truth.copy()
+    shrunk[:, :, 3] *= 0.3
+    trajectory = os.path.join(scratch, "shrunk.txt")
+    np.savetxt(trajectory, shrunk.reshape(-1, 12), fmt="%.9e")
+    out = os.path.join(scratch, "rescale")
+    subprocess.run([cli, "rescale", "--trajectory", trajectory, "--kitti", sequence, "--labels",
+                    labels, "--out", out], check=True, stdout=subprocess.DEVNULL)
+    expected = np.loadtxt(os.path.join(out, "poses_kitti.txt")).reshape(-1, 3, 4)
+
+    names = sorted(os.listdir(os.path.join(sequence, "image_0")))
+    images = (cv2.imread(os.path.join(sequence, "image_0", name), cv2.IMREAD_GRAYSCALE)
+              for name in names)
+    times = np.loadtxt(os.path.join(sequence, "times.txt")).tolist()
+    result = roadscale.rescale(np.loadtxt(trajectory).reshape(-1, 3, 4), images, camera,
+                               labels=labels, timestamps=times)
+    poses = result["poses"][:, :3]
+    if poses.shape != expected.shape:
+        fail("rescale: %s poses, the CLI wrote %s" % (poses.shape, expected.shape))
+    difference = np.abs(poses - expected).max()
+    if difference > 1e-6 * max(1.0, np.abs(expected).max()):
+        fail("rescale: poses differ from the CLI's by up to %g" % difference)
+    if len(result["status"]) != len(poses) or result["status"][0] != "first":
+        fail("rescale: statuses %s" % result["status"][:3])
+    steps = lambda p: np.linalg.norm(np.diff(p[:, :, 3], axis=0), axis=1).sum()
+    ratio = steps(poses) / steps(truth)
+    if abs(ratio - 1.0) > 0.03:
+        fail("rescale: the path is %.3f of the truth's (input 0.3)" % ratio)
+    try:
+        roadscale.rescale(shrunk, iter([]), camera)
+        fail("rescale took no images")
+    except roadscale.Error as error:
+        if "images came" not in str(error):
+            fail("rescale: unclear error: %s" % error)
 
 
 if __name__ == "__main__":

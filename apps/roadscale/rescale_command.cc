@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "roadscale/config/config_yaml.h"
+#include "roadscale/config/rescale_config.h"
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
@@ -156,14 +156,7 @@ void ReportAgreement(const InputAgreement& agreement, bool step_own_ratio) {
 }
 
 void RunRescale(const RescaleArguments& arguments) {
-  TrajectoryRescalerOptions options;
-  if (!arguments.config.empty()) {
-    RunConfig config;
-    ReadRunConfig(arguments.config, &config);
-    options.scale = config.scale;
-    options.road_alignment = config.pipeline.mapping.road_alignment;
-    options.alignment = config.pipeline.mapping.alignment;
-  }
+  TrajectoryRescalerOptions options = RescalerOptionsFromConfig(arguments.config);
   CheckOption(std::isfinite(arguments.max_time_diff) && arguments.max_time_diff >= 0.0,
               "--max-time-diff", "must be a non-negative number of seconds");
   options.tracker.detector.type = ParseDetectorType(arguments.detector);

@@ -1,0 +1,18 @@
+#include "roadscale/config/rescale_config.h"
+
+#include "roadscale/config/config_yaml.h"
+
+namespace roadscale {
+
+TrajectoryRescalerOptions RescalerOptionsFromConfig(const std::string& config_path) {
+  TrajectoryRescalerOptions options;
+  if (config_path.empty()) return options;
+  RunConfig config;
+  ReadRunConfig(config_path, &config);
+  options.scale = config.scale;
+  options.road_alignment = config.pipeline.mapping.road_alignment;
+  options.alignment = config.pipeline.mapping.alignment;
+  return options;
+}
+
+}  // namespace roadscale
