@@ -53,20 +53,24 @@ CameraSetup CameraFrom(const py::object& camera) {
   return setup;
 }
 
-// A finished frame as Python sees it.
-py::dict FrameDict(const FrameRecord& record, const Rigid3d& world_from_cam) {
+py::array_t<double> PoseMatrix(const Rigid3d& world_from_cam) {
   py::array_t<double> pose({4, 4});
   auto cells = pose.mutable_unchecked<2>();
   for (int row = 0; row < 4; ++row) {
     for (int col = 0; col < 4; ++col) cells(row, col) = world_from_cam.matrix()(row, col);
   }
+  return pose;
+}
+
+// A finished frame as Python sees it.
+py::dict FrameDict(const FrameRecord& record, const Rigid3d& world_from_cam) {
   py::dict frame;
   frame["index"] = record.index;
   frame["timestamp"] = record.timestamp;
   frame["status"] = record.status;
   frame["step_length_m"] = record.step_length_m;
   frame["keyframe"] = record.keyframe;
-  frame["world_from_cam"] = pose;
+  frame["world_from_cam"] = PoseMatrix(world_from_cam);
   return frame;
 }
 
@@ -225,11 +229,17 @@ class PythonOdometry {
     OdometryOptions options = OdometryOptionsFromConfig(config, CameraFrom(camera));
     options.run.threaded = threaded;
     segmenters_ = MakeConfigSegmenters(config);
-    odometry_ = std::make_unique<Odometry>(options, Pointers(segmenters_),
-                                           [this](const FrameRecord& record, const Rigid3d& pose) {
-                                             const std::lock_guard<std::mutex> lock(mutex_);
-                                             finished_.emplace_back(record, pose);
-                                           });
+    odometry_ = std::make_unique<Odometry>(
+        options, Pointers(segmenters_),
+        [this](const FrameRecord& record, const Rigid3d& pose) {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          finished_.emplace_back(record, pose);
+        },
+        /*scale=*/nullptr,
+        [this](const ProvisionalPose& pose) {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          latest_ = pose;
+        });
   }
 
   py::list Track(const py::array_t<std::uint8_t, py::array::c_style>& image, double timestamp,
@@ -252,6 +262,21 @@ class PythonOdometry {
 
   const std::string& summary() const { return summary_; }
 
+  py::object Latest() {
+    std::optional<ProvisionalPose> latest;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      latest = latest_;
+    }
+    if (!latest) return py::none();
+    py::dict pose;
+    pose["index"] = latest->index;
+    pose["timestamp"] = latest->timestamp;
+    pose["world_from_cam"] = PoseMatrix(latest->world_from_cam);
+    pose["metric"] = latest->metric;
+    return pose;
+  }
+
   py::array_t<double> Poses() const { return PoseArray(all_poses_); }
 
  private:
@@ -272,6 +297,7 @@ class PythonOdometry {
   std::vector<std::unique_ptr<Segmenter>> segmenters_;
   std::mutex mutex_;
   std::vector<std::pair<FrameRecord, Rigid3d>> finished_;
+  std::optional<ProvisionalPose> latest_;
   std::string summary_;
   std::vector<Rigid3d> all_poses_;  // every frame handed to Python so far, in order
   // Last: its threads stop before the members they write to go.
@@ -311,6 +337,11 @@ threaded: segmentation, frontend, scale and pose on their own threads (the same 
            "Processes what is left and returns the last finished frames.")
       .def_property_readonly("summary", &PythonOdometry::summary,
                              "The run's summary once finish() has returned.")
+      .def("latest", &PythonOdometry::Latest,
+           "The newest frame's provisional pose, None before the first: a dict of index, "
+           "timestamp, world_from_cam (4 x 4) and metric (False before the first scale: "
+           "map units). The map's localisation as soon as the odometry took the frame (it runs "
+           "up to two frames behind track()); the window refines it into the final pose.")
       .def("poses", &PythonOdometry::Poses,
            "The world_from_cam of every frame returned so far, as an (N, 4, 4) array.");
   module.def("rescale", &roadscale::Rescale, py::arg("poses"), py::arg("images"), py::arg("camera"),

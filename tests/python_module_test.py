@@ -47,11 +47,20 @@ def main():
         times = np.loadtxt(os.path.join(sequence, "times.txt"))
         images = sorted(os.listdir(os.path.join(sequence, "image_0")))
         frames = []
+        if odometry.latest() is not None:
+            fail("latest() before any frame: %s" % odometry.latest())
         for name, timestamp in zip(images, times):
             path = os.path.join(sequence, "image_0", name)
             frames += odometry.track(cv2.imread(path, cv2.IMREAD_GRAYSCALE), float(timestamp),
                                      path)
         frames += odometry.finish()
+        latest = odometry.latest()
+        if latest is None or latest["index"] != len(images) - 1 or not latest["metric"]:
+            fail("latest() after the last frame: %s" % latest)
+        # The map's localisation of the last frame, which the window refined since.
+        offset = np.linalg.norm(latest["world_from_cam"][:3, 3] - expected[-1][:, 3])
+        if offset > 0.3:
+            fail("latest() is %.2f m from the last frame's final pose" % offset)
 
         if [frame["index"] for frame in frames] != list(range(len(images))):
             fail("frames out of order or missing: %s" % [frame["index"] for frame in frames])

@@ -163,6 +163,11 @@ class KeyframeBackend {
 
   // Frames taken and not returned yet.
   size_t num_waiting() const { return pending_.size(); }
+  // The newest frame's pose as the map has it now, before later adjustments of the window
+  // move it: world_from_cam in the frame of the final poses, in metres once `scaled()`, in
+  // the map's own units before.
+  Rigid3d NewestWorldFromCam() const { return last_cam_from_world_.inverse(); }
+  bool scaled() const { return scaled_; }
   const LocalWindow& window() const { return window_; }
 
  private:

@@ -17,9 +17,10 @@ void OdometryOptions::Check() const {
 }
 
 Odometry::Odometry(const OdometryOptions& options, std::vector<Segmenter*> segmenters,
-                   FrameOutput output, ScaleSource* scale)
+                   FrameOutput output, ScaleSource* scale, ProvisionalOutput provisional)
     : options_(options),
       output_(std::move(output)),
+      provisional_(std::move(provisional)),
       segmenters_(std::move(segmenters)),
       scale_(scale),
       frames_(options.camera, kStageQueueCapacity) {
@@ -42,7 +43,7 @@ Odometry::~Odometry() { Stop(); }
 void Odometry::Run() {
   try {
     result_ = RunPipeline(frames_, segmenters_, *scale_, options_.pipeline, /*out_dir=*/"",
-                          options_.run, output_);
+                          options_.run, output_, /*stop=*/nullptr, provisional_);
   } catch (...) {
     error_ = std::current_exception();
   }

@@ -53,9 +53,12 @@ class Odometry {
   // frame's name), not owned, alive until Finish; several are interchangeable copies that
   // segment frames at once; none: no segmentation (the paper's ablation). `scale`: the step
   // lengths of the frame-to-frame host (not owned; nullptr: the road plane of section III);
-  // the keyframe back end makes its own. Throws Error on invalid options.
+  // the keyframe back end makes its own. `provisional`: each frame's provisional pose as soon
+  // as the odometry has taken the frame (ProvisionalPose: the map's localisation, refined
+  // before `output` gives the final pose a window later), in frame order, from the same
+  // thread as `output`. Throws Error on invalid options.
   Odometry(const OdometryOptions& options, std::vector<Segmenter*> segmenters, FrameOutput output,
-           ScaleSource* scale = nullptr);
+           ScaleSource* scale = nullptr, ProvisionalOutput provisional = {});
   // Waits for the frames handed in so far to be processed, without Finish's errors.
   ~Odometry();
   Odometry(const Odometry&) = delete;
@@ -82,6 +85,7 @@ class Odometry {
 
   OdometryOptions options_;
   FrameOutput output_;
+  ProvisionalOutput provisional_;
   NoSegmenter no_segmenter_;
   std::vector<Segmenter*> segmenters_;
   std::unique_ptr<ScaleSource> road_scale_;

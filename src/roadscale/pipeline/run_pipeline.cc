@@ -155,15 +155,17 @@ std::string FrameName(const Frame& frame) {
 PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
                               const PipelineOptions& options, const std::string& out_dir,
                               const RunPipelineOptions& run_options, const FrameOutput& on_frame,
-                              const std::atomic<bool>* stop) {
+                              const std::atomic<bool>* stop,
+                              const ProvisionalOutput& on_provisional) {
   return RunPipeline(source, std::vector<Segmenter*>{&segmenter}, scale, options, out_dir,
-                     run_options, on_frame, stop);
+                     run_options, on_frame, stop, on_provisional);
 }
 
 PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>& segmenters,
                               ScaleSource& scale, const PipelineOptions& options,
                               const std::string& out_dir, const RunPipelineOptions& run_options,
-                              const FrameOutput& on_frame, const std::atomic<bool>* stop) {
+                              const FrameOutput& on_frame, const std::atomic<bool>* stop,
+                              const ProvisionalOutput& on_provisional) {
   run_options.Check();
   CheckOption(!segmenters.empty(), "segmenters", "at least one segmenter is needed");
   // Before any thread starts: OpenCV's thread count is one process-wide setting, and
@@ -185,6 +187,7 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
     result.summary.Add(record);
     if (on_frame) on_frame(record, world_from_cam);
   });
+  pipeline.SetProvisionalOutput(on_provisional);
   const Clock::time_point start = Clock::now();
   const double cpu_start = ProcessCpuMs();
   // Without segmentation there is nothing to schedule or carry.

@@ -51,12 +51,14 @@ std::string FrameName(const Frame& frame);
 // before each frame is loaded: once it is true no new frame is read, the frames already read are
 // finished, and the result says `interrupted`. An error in any stage (a corrupt image, a
 // missing label file) stops the run: the frames before it are finished and written, then
-// the error is thrown.
+// the error is thrown. `on_provisional` gets each frame's provisional pose (ProvisionalPose)
+// from the same stage, as soon as it is known.
 PipelineRunResult RunPipeline(FrameSource& source, Segmenter& segmenter, ScaleSource& scale,
                               const PipelineOptions& options, const std::string& out_dir,
                               const RunPipelineOptions& run_options = {},
                               const FrameOutput& on_frame = {},
-                              const std::atomic<bool>* stop = nullptr);
+                              const std::atomic<bool>* stop = nullptr,
+                              const ProvisionalOutput& on_provisional = {});
 
 // The same with stage 1 on one thread per segmenter (interchangeable copies: each frame is
 // segmented by one of them, whichever is free), the frames handed on in order; without
@@ -66,6 +68,7 @@ PipelineRunResult RunPipeline(FrameSource& source, const std::vector<Segmenter*>
                               const std::string& out_dir,
                               const RunPipelineOptions& run_options = {},
                               const FrameOutput& on_frame = {},
-                              const std::atomic<bool>* stop = nullptr);
+                              const std::atomic<bool>* stop = nullptr,
+                              const ProvisionalOutput& on_provisional = {});
 
 }  // namespace roadscale

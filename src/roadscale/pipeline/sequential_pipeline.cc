@@ -162,6 +162,10 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
     waiting.scale_ms = MillisecondsSince(backend_start);
     waiting.total_ms += MillisecondsSince(start);
     waiting.scale_cpu_ms = ThreadCpuMs() - cpu_start;
+    if (provisional_output_) {
+      provisional_output_(
+          {record.index, record.timestamp, backend_->NewestWorldFromCam(), backend_->scaled()});
+    }
     for (const MappedFrame& mapped : finished) OutputMappedFrame(mapped);
     record.status = "waiting";
     return record;
@@ -224,6 +228,10 @@ void SequentialPipeline::ApplyAndOutput(FrameRecord record, const TwoViewMotion&
       break;
   }
 
+  if (provisional_output_) {
+    provisional_output_(
+        {record.index, record.timestamp, integrator_.world_from_cam(), integrator_.has_scale()});
+  }
   Output(record, integrator_.world_from_cam());
 }
 

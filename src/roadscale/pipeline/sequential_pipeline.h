@@ -128,6 +128,19 @@ void SetRoadMask(const cv::Mat& road_mask, TrackedFrame* tracked);
 // folder; a program embedding the pipeline keeps them in memory.
 using FrameOutput = std::function<void(const FrameRecord&, const Rigid3d& world_from_cam)>;
 
+// A frame's pose as soon as the scale and pose stage has taken it: in keyframe mode the map's
+// localisation of the frame, which the window's bundle adjustment refines before the frame's
+// final pose (FrameOutput) leaves a window later; in frame-to-frame mode the final pose itself.
+// For a program that steers by the odometry and cannot wait for the window.
+struct ProvisionalPose {
+  size_t index = 0;
+  double timestamp = 0.0;
+  Rigid3d world_from_cam = Rigid3d::Identity();  // the final poses' world
+  // Metres once the run has a scale; before it the monocular map's own units.
+  bool metric = false;
+};
+using ProvisionalOutput = std::function<void(const ProvisionalPose&)>;
+
 // The per-frame logic of the system, for each frame: frontend (features outside the static
 // mask, tracks landing on moving objects dropped) -> two-view motion -> scale source (with
 // the previous frame's road mask) -> pose -> the frame's output. Owns the frontend, the pose
@@ -159,6 +172,9 @@ class SequentialPipeline {
   // Receives each finished frame, in frame order (a frame that waits for the first scale
   // later than the call of Integrate that took it). Without one the frames are dropped.
   void SetOutput(FrameOutput output) { output_ = std::move(output); }
+  // Receives each frame's provisional pose from Integrate, in frame order; in frame-to-frame
+  // mode a frame waiting for the first scale gets it when the frame goes out.
+  void SetProvisionalOutput(ProvisionalOutput output) { provisional_output_ = std::move(output); }
 
   // Hands on the frames still waiting (for a first scale, or in the keyframe back end's
   // window). Call it after the last frame, and after a stop or an error so that the frames
@@ -196,6 +212,7 @@ class SequentialPipeline {
   int max_waiting_frames_ = 0;
   std::vector<WaitingFrame> waiting_;
   FrameOutput output_;
+  ProvisionalOutput provisional_output_;
   bool stopped_waiting_ = false;
   size_t position_ = 0;
   cv::Mat prev_road_mask_;
