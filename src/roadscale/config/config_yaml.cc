@@ -166,6 +166,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("ransac_max_iterations", &s.ransac.max_iterations),
         Scalar("ransac_confidence", &s.ransac.confidence),
         Scalar("ransac_seed", &s.ransac.seed),
+        Scalar("ransac_max_tilt_deg", &s.ransac.max_tilt_deg),
         Scalar("filter_window", &s.filter.window),
         Scalar("filter_gaussian_sigma", &s.filter.gaussian_sigma),
         Scalar("filter_max_change_per_frame", &s.filter.max_change_per_frame),

@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "roadscale/geometry/angles.h"
 #include "roadscale/util/error.h"
 
 #include <Eigen/Eigenvalues>
@@ -49,6 +50,14 @@ std::vector<int> Inliers(const std::vector<Eigen::Vector3d>& points, const Plane
   return inliers;
 }
 
+// RoadPlaneRansacOptions::max_tilt_deg.
+bool WithinTilt(const Plane& plane, const Eigen::Vector3d& reference_normal,
+                const RoadPlaneRansacOptions& options) {
+  if (options.max_tilt_deg <= 0.0) return true;
+  const double cosine = plane.normal.dot(reference_normal.normalized());
+  return cosine >= std::cos(options.max_tilt_deg * kRadiansPerDegree);
+}
+
 }  // namespace
 
 void RoadPlaneRansacOptions::Check() const {
@@ -58,6 +67,8 @@ void RoadPlaneRansacOptions::Check() const {
   CheckOption(max_iterations >= 1, "ransac.max_iterations", "must be at least 1");
   CheckOption(std::isfinite(confidence) && confidence > 0.0 && confidence < 1.0,
               "ransac.confidence", "must be in (0, 1)");
+  CheckOption(std::isfinite(max_tilt_deg) && max_tilt_deg >= 0.0 && max_tilt_deg < 90.0,
+              "ransac.max_tilt_deg", "must be in [0, 90) degrees (0: any tilt)");
 }
 
 std::optional<Plane> FitPlaneLeastSquares(const std::vector<Eigen::Vector3d>& points,
@@ -108,7 +119,8 @@ RoadPlaneFit FitRoadPlaneRansac(const std::vector<Eigen::Vector3d>& points,
     if (a == b || a == c || b == c) continue;
     const std::optional<Plane> plane =
         PlaneThroughPoints(points[a], points[b], points[c], reference_normal);
-    if (!plane || !(plane->height > 0.0)) continue;
+    if (!plane || !(plane->height > 0.0) || !WithinTilt(*plane, reference_normal, options))
+      continue;
     const Consensus consensus = Score(points, *plane, options.inlier_threshold);
     if (!best_plane || consensus.BetterThan(best)) {
       best_plane = plane;
@@ -133,6 +145,7 @@ RoadPlaneFit FitRoadPlaneRansac(const std::vector<Eigen::Vector3d>& points,
   for (int round = 0; round < kMaxRefitRounds; ++round) {
     const std::optional<Plane> refit = FitPlaneLeastSquares(points, inliers, reference_normal);
     if (!refit || !(refit->height > 0.0)) return fit;
+    if (!WithinTilt(*refit, reference_normal, options)) break;
     plane = *refit;
     std::vector<int> refit_inliers = Inliers(points, plane, options.inlier_threshold);
     if (refit_inliers == inliers) break;

@@ -23,6 +23,15 @@ struct RoadPlaneRansacOptions {
   // Stops early once a sample of inliers only has been drawn with this probability.
   double confidence = 0.999;
   uint32_t seed = 42;
+  // Largest angle (degrees) between the plane's normal and the reference normal (the road
+  // model's expected one); 0: any. Algorithm 2 keeps a triangle only within its theta_0 (5
+  // degrees) of the expected normal, but the plane fitted through the kept points may tilt
+  // further: on a rendered jam a pair's near road points and far points that moved with the
+  // traffic (the lead car's shadow) made one plane tilted 7 degrees, and its height 30 % off.
+  // Off by default: limited to 5 degrees it mends that pair but moves the other jams both
+  // ways and the real traffic drive's length by a quarter (docs/benchmarks.md, "Traffic jams
+  // as a judge"); an option for that work to go on with.
+  double max_tilt_deg = 0.0;
 
   void Check() const;
 };
@@ -46,7 +55,8 @@ std::optional<Plane> FitPlaneLeastSquares(const std::vector<Eigen::Vector3d>& po
 // The road plane by RANSAC on three-point samples (seeded: the same input gives the same
 // plane), then a least-squares refit on the inliers, repeated until the inlier set no longer
 // changes (at most a few rounds). Normals are turned towards `reference_normal`; planes with
-// the camera on or below them (h <= 0) are never chosen. kTooFewPoints below min_points;
+// the camera on or below them (h <= 0) are never chosen, nor, with max_tilt_deg, planes
+// tilted further than that from `reference_normal`. kTooFewPoints below min_points;
 // kDegenerate when no plane with h > 0 has three inliers or the inliers are collinear.
 RoadPlaneFit FitRoadPlaneRansac(const std::vector<Eigen::Vector3d>& points,
                                 const Eigen::Vector3d& reference_normal,

@@ -1,5 +1,6 @@
 #include "roadscale/scale/road_plane_ransac.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -119,6 +120,36 @@ TEST(RoadPlaneRansac, LeastSquaresPlaneOfKnownPoints) {
   EXPECT_FALSE(FitPlaneLeastSquares(points, {0, 1}, Eigen::Vector3d::UnitY()).has_value());
 }
 
+// A pair's road points in a traffic jam (docs/benchmarks.md, "Traffic jams as a judge"): 12
+// near points on the road 1.40 below the camera, and 20 that a plane tilted 11 degrees holds,
+// from the near road out to 16 m, as points that moved with the traffic triangulate.
+TEST(RoadPlaneRansac, TheTiltLimitKeepsThePlaneTheRoadModelAllows) {
+  const Eigen::Vector3d down = Eigen::Vector3d::UnitY();
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 12; ++i) {
+    points.emplace_back(-1.5 + 1.0 * (i % 4), 1.40, 7.0 + 0.6 * (i / 4));
+  }
+  const double slope = std::tan(11.0 * kRadiansPerDegree);
+  for (int i = 0; i < 20; ++i) {
+    const double z = 7.5 + 0.45 * i;
+    points.emplace_back(1.2 - 0.13 * i, 1.40 + slope * (z - 8.0), z);
+  }
+  RoadPlaneRansacOptions options;
+  options.min_points = 6;
+  const RoadPlaneFit free = FitRoadPlaneRansac(points, down, options);
+  ASSERT_EQ(free.status, RoadPlaneFit::Status::kOk);
+  EXPECT_GT(std::acos(free.plane.normal.dot(down)) / kRadiansPerDegree, 6.0);
+
+  options.max_tilt_deg = 5.0;
+  const RoadPlaneFit limited = FitRoadPlaneRansac(points, down, options);
+  ASSERT_EQ(limited.status, RoadPlaneFit::Status::kOk);
+  EXPECT_LT(std::acos(limited.plane.normal.dot(down)) / kRadiansPerDegree, 5.0);
+  EXPECT_NEAR(limited.plane.height, 1.40, 0.02);
+  for (int index = 0; index < 12; ++index) {
+    EXPECT_TRUE(std::binary_search(limited.inliers.begin(), limited.inliers.end(), index));
+  }
+}
+
 TEST(RoadPlaneRansacOptions, CheckRejectsBadValues) {
   RoadPlaneRansacOptions options;
   EXPECT_NO_THROW(options.Check());
@@ -126,6 +157,11 @@ TEST(RoadPlaneRansacOptions, CheckRejectsBadValues) {
   EXPECT_THROW(options.Check(), Error);
   options = RoadPlaneRansacOptions();
   options.min_points = 2;
+  EXPECT_THROW(options.Check(), Error);
+  options = RoadPlaneRansacOptions();
+  options.max_tilt_deg = 90.0;
+  EXPECT_THROW(options.Check(), Error);
+  options.max_tilt_deg = -1.0;
   EXPECT_THROW(options.Check(), Error);
 }
 
