@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -11,8 +12,8 @@
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
 #include "roadscale/odometry/odometry.h"
+#include "roadscale/odometry/odometry_config.h"
 #include "roadscale/pipeline/road_scale_source.h"
-#include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/synth/scene_writer.h"
 #include "roadscale/synth/synthetic_scene.h"
 #include "roadscale/testing/temp_dir.h"
@@ -20,13 +21,11 @@
 namespace roadscale {
 namespace {
 
-std::unique_ptr<LabelImageSegmenter> LabelsIn(const std::string& folder) {
-  SegmentationModel model;
-  model.yaml_path = folder;
-  model.backend = SegmentationBackend::kLabelImages;
-  model.label_images.folder = folder;
-  model.label_images.ids = LabelIdSpace::kTrainIds;
-  return std::make_unique<LabelImageSegmenter>(model, MaskOptions());
+// The label images of `folder` as `roadscale run --labels` reads them.
+std::unique_ptr<Segmenter> LabelsIn(const std::string& folder) {
+  RunConfig config;
+  config.labels = folder;
+  return std::move(MakeConfigSegmenters(config).front());
 }
 
 class OdometrySynthetic : public ::testing::TestWithParam<bool> {};
