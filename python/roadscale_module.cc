@@ -23,7 +23,6 @@
 #include "roadscale/odometry/odometry.h"
 #include "roadscale/odometry/odometry_config.h"
 #include "roadscale/rescale/trajectory_rescaler.h"
-#include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/util/error.h"
 
 namespace py = pybind11;
@@ -124,18 +123,12 @@ cv::Mat ImageView(const py::array_t<std::uint8_t, py::array::c_style>& image, co
 }
 
 // The segmenter `roadscale rescale` opens: label PNGs (named like the frames), else a model
-// YAML, else none.
+// YAML (one copy: rescale segments the pose frames in turn), else none.
 std::unique_ptr<Segmenter> RescaleSegmenter(const std::string& labels, const std::string& model) {
-  if (!labels.empty()) {
-    SegmentationModel label_model;
-    label_model.yaml_path = labels;
-    label_model.backend = SegmentationBackend::kLabelImages;
-    label_model.label_images.folder = labels;
-    return std::make_unique<LabelImageSegmenter>(label_model, MaskOptions());
-  }
-  if (model.empty()) return nullptr;
   RunConfig config;
-  config.segmentation.model = model;
+  config.labels = labels;
+  config.segmentation.model = model.empty() ? "none" : model;
+  config.segmentation.workers = 1;
   std::vector<std::unique_ptr<Segmenter>> segmenters = MakeConfigSegmenters(config);
   return segmenters.empty() ? nullptr : std::move(segmenters.front());
 }
@@ -158,6 +151,11 @@ py::dict Rescale(const py::array_t<double, py::array::c_style | py::array::force
     for (size_t k = 0; k < external.size(); ++k) frames_of_poses.push_back(k);
   }
   TrajectoryRescaler rescaler(setup.camera, external, frames_of_poses, options);
+  if (timestamps && timestamps->size() <= rescaler.last_frame()) {
+    throw Error("rescale: " + std::to_string(timestamps->size()) +
+                " timestamps, but the last pose is at frame " +
+                std::to_string(rescaler.last_frame()));
+  }
   std::unique_ptr<Segmenter> segmenter = RescaleSegmenter(labels, model);
 
   std::vector<Rigid3d> metric;
@@ -180,9 +178,8 @@ py::dict Rescale(const py::array_t<double, py::array::c_style | py::array::force
       const cv::Mat image = ImageView(array, "rescale");
       Frame frame;
       frame.index = position;
-      frame.timestamp = timestamps && position < timestamps->size()
-                            ? (*timestamps)[position]
-                            : static_cast<double>(position) / kDefaultFrameRateHz;
+      frame.timestamp = timestamps ? (*timestamps)[position]
+                                   : static_cast<double>(position) / kDefaultFrameRateHz;
       char name[32];
       std::snprintf(name, sizeof(name), "%06zu", position);
       frame.path = name;

@@ -114,12 +114,21 @@ def check_rescale(roadscale, cli, data, sequence, labels, camera, scratch):
     ratio = steps(poses) / steps(truth)
     if abs(ratio - 1.0) > 0.03:
         fail("rescale: the path is %.3f of the truth's (input 0.3)" % ratio)
-    try:
-        roadscale.rescale(shrunk, iter([]), camera)
-        fail("rescale took no images")
-    except roadscale.Error as error:
-        if "images came" not in str(error):
-            fail("rescale: unclear error: %s" % error)
+    bad_calls = [
+        ("no images", lambda: roadscale.rescale(shrunk, iter([]), camera), "images came"),
+        ("images of another size",
+         lambda: roadscale.rescale(shrunk, (np.zeros((10, 10), np.uint8) for _ in names), camera),
+         "10x10"),
+        ("too few timestamps",
+         lambda: roadscale.rescale(shrunk, iter([]), camera, timestamps=[0.0, 0.1]), "timestamps"),
+    ]
+    for what, call, expected_text in bad_calls:
+        try:
+            call()
+            fail("rescale took %s" % what)
+        except roadscale.Error as error:
+            if expected_text not in str(error):
+                fail("rescale, %s: unclear error: %s" % (what, error))
 
 
 if __name__ == "__main__":

@@ -175,6 +175,13 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     throw Error("rescaling: frame " + std::to_string(frame.index) +
                 " comes after the trajectory's last pose");
   }
+  if (frame.image.type() != CV_8UC1 || frame.image.cols != camera_.width ||
+      frame.image.rows != camera_.height) {
+    throw Error("rescaling: frame " + std::to_string(frame.index) + " is " +
+                std::to_string(frame.image.cols) + "x" + std::to_string(frame.image.rows) +
+                (frame.image.type() == CV_8UC1 ? "" : " and not 8-bit grey") + ", the camera's " +
+                std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
+  }
   const auto start = std::chrono::steady_clock::now();
   const size_t position = next_frame_;
   const bool pose_frame = position == pose_frames_[next_pose_];

@@ -357,6 +357,19 @@ TEST(TrajectoryRescaler, RejectsFramesBeyondTheLastPoseAndAnEarlyFinish) {
   EXPECT_THROW(TrajectoryRescaler(renderer.camera(), gt, {0}, Options()), Error);
 }
 
+TEST(TrajectoryRescaler, RejectsAnImageThatIsNotTheCamerasGreySize) {
+  const FlatRoadRenderer renderer;
+  const Trajectory gt = Drive({0.0, 1.0});
+  TrajectoryRescaler rescaler(renderer.camera(), gt, {0, 1}, Options());
+  Frame frame;
+  frame.image = cv::Mat(10, 10, CV_8UC1, cv::Scalar(0));
+  EXPECT_THROW(rescaler.AddFrame(frame, SegmentationResult()), Error);
+  cv::cvtColor(renderer.Render(gt.world_from_cam[0]), frame.image, cv::COLOR_GRAY2BGR);
+  EXPECT_THROW(rescaler.AddFrame(frame, SegmentationResult()), Error);
+  frame.image = renderer.Render(gt.world_from_cam[0]);
+  EXPECT_NO_THROW(rescaler.AddFrame(frame, SegmentationResult()));
+}
+
 TEST(AssociatePosesWithFrames, KittiRowsAreFramesInOrder) {
   Trajectory rows = Drive({0, 1, 1});
   rows.timestamps.clear();
