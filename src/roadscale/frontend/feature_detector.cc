@@ -99,6 +99,7 @@ std::string DetectorTypeName(DetectorType type) {
 void FeatureDetectorOptions::Check() const {
   CheckOption(cell_size_px >= 4, "frontend.cell_size_px", "must be at least 4 pixels");
   CheckOption(max_per_cell >= 1, "frontend.max_per_cell", "must be at least 1");
+  CheckOption(road_max_per_cell >= 1, "frontend.road_max_per_cell", "must be at least 1");
   CheckOption(std::isfinite(min_distance_px) && min_distance_px >= 0.0, "frontend.min_distance_px",
               "must be a non-negative number");
   CheckOption(border_px >= 0, "frontend.border_px", "must be non-negative");
@@ -115,12 +116,16 @@ FeatureDetector::FeatureDetector(const FeatureDetectorOptions& options)
 }
 
 std::vector<cv::Point2f> FeatureDetector::Detect(const cv::Mat& image, const cv::Mat& mask,
-                                                 const std::vector<cv::Point2f>& existing) const {
+                                                 const std::vector<cv::Point2f>& existing,
+                                                 const cv::Mat& road_mask) const {
   if (image.empty() || image.type() != CV_8UC1) {
     throw Error("feature detection needs a non-empty 8-bit grey image");
   }
   if (!mask.empty() && (mask.type() != CV_8UC1 || mask.size() != image.size())) {
     throw Error("feature detection mask must be 8-bit single channel and of the image's size");
+  }
+  if (!road_mask.empty() && (road_mask.type() != CV_8UC1 || road_mask.size() != image.size())) {
+    throw Error("feature detection road mask must be 8-bit single channel and of the image's size");
   }
 
   cv::Mat allowed = mask.empty() ? cv::Mat(image.size(), CV_8UC1, cv::Scalar(255)) : mask.clone();
@@ -142,7 +147,20 @@ std::vector<cv::Point2f> FeatureDetector::Detect(const cv::Mat& image, const cv:
     return gy * grid_cols + gx;
   };
 
-  std::vector<int> count(static_cast<size_t>(grid_cols) * grid_rows, 0);
+  // A cell's cap: the road's where any of its pixels is road, as a road feature may land there.
+  std::vector<int> cap(static_cast<size_t>(grid_cols) * grid_rows, options_.max_per_cell);
+  if (!road_mask.empty() && options_.road_max_per_cell > options_.max_per_cell) {
+    for (int gy = 0; gy < grid_rows; ++gy) {
+      for (int gx = 0; gx < grid_cols; ++gx) {
+        const cv::Rect cell_rect =
+            cv::Rect(gx * cell, gy * cell, cell, cell) & cv::Rect(0, 0, image.cols, image.rows);
+        if (cv::countNonZero(road_mask(cell_rect)) > 0) {
+          cap[gy * grid_cols + gx] = options_.road_max_per_cell;
+        }
+      }
+    }
+  }
+  std::vector<int> count(cap.size(), 0);
   NeighbourGrid taken(options_.min_distance_px);
   for (const cv::Point2f& p : existing) {
     if (p.x < 0 || p.y < 0 || p.x >= image.cols || p.y >= image.rows) continue;
@@ -150,9 +168,9 @@ std::vector<cv::Point2f> FeatureDetector::Detect(const cv::Mat& image, const cv:
     taken.Add(p);
   }
   // Skip the (costly) detection when every cell is already full.
-  if (std::all_of(count.begin(), count.end(), [&](int c) { return c >= options_.max_per_cell; })) {
-    return {};
-  }
+  bool every_cell_full = true;
+  for (size_t i = 0; i < count.size(); ++i) every_cell_full = every_cell_full && count[i] >= cap[i];
+  if (every_cell_full) return {};
 
   std::vector<cv::KeyPoint> keypoints;
   const bool sift = options_.type == DetectorType::kSift;
@@ -190,8 +208,10 @@ std::vector<cv::Point2f> FeatureDetector::Detect(const cv::Mat& image, const cv:
     const int xi = static_cast<int>(std::lround(p.x));
     const int yi = static_cast<int>(std::lround(p.y));
     if (allowed.at<unsigned char>(yi, xi) == 0) continue;
-    int& n = count[cell_index(p)];
-    if (n >= options_.max_per_cell || taken.HasNeighbour(p)) continue;
+    const int index = cell_index(p);
+    const bool on_road = !road_mask.empty() && road_mask.at<unsigned char>(yi, xi) != 0;
+    int& n = count[index];
+    if (n >= (on_road ? cap[index] : options_.max_per_cell) || taken.HasNeighbour(p)) continue;
     ++n;
     taken.Add(p);
     features.push_back(p);

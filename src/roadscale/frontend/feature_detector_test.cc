@@ -41,6 +41,28 @@ TEST(FeatureDetector, EveryDetectorFindsSpreadFeatures) {
   }
 }
 
+// The road's cells take more features than the rest where a road mask is given; without one,
+// every cell has the common cap.
+TEST(FeatureDetector, TheRoadGetsItsOwnCapPerCell) {
+  const cv::Mat image = testing::SyntheticTexture(400, 200);
+  cv::Mat road(image.size(), CV_8UC1, cv::Scalar(0));
+  road.rowRange(100, 200).setTo(255);
+  FeatureDetectorOptions options;
+  options.max_per_cell = 2;
+  options.road_max_per_cell = 6;
+  const FeatureDetector detector(options);
+  int road_cells_above_common_cap = 0;
+  for (const auto& [cell, n] : CountPerCell(detector.Detect(image, cv::Mat(), {}, road), 50)) {
+    EXPECT_LE(n, cell.second >= 2 ? 6 : 2) << "cell " << cell.first << "," << cell.second;
+    road_cells_above_common_cap += cell.second >= 2 && n > 2;
+  }
+  EXPECT_GE(road_cells_above_common_cap, 8);
+  for (const auto& [cell, n] : CountPerCell(detector.Detect(image, cv::Mat()), 50)) {
+    EXPECT_LE(n, 2);
+  }
+  EXPECT_THROW(detector.Detect(image, cv::Mat(), {}, cv::Mat(10, 10, CV_8UC1)), Error);
+}
+
 TEST(FeatureDetector, HalfResolutionSiftFindsABlobAtItsFullResolutionPosition) {
   // One dark Gaussian blob (sigma 4 px) on a flat image: SIFT's strongest response is its
   // centre, whatever resolution it runs at.

@@ -148,7 +148,7 @@ std::vector<int64_t> FeatureTracker::DropOnMaskAt(int frame_index, const cv::Mat
   return dropped;
 }
 
-int FeatureTracker::Detect(const cv::Mat& detection_mask, bool force) {
+int FeatureTracker::Detect(const cv::Mat& detection_mask, bool force, const cv::Mat& road_mask) {
   if (image_.empty()) throw Error("feature detection before the first frame was tracked");
   if (!force && static_cast<int>(tracks_.size()) >= options_.redetect_below) return 0;
 
@@ -156,7 +156,8 @@ int FeatureTracker::Detect(const cv::Mat& detection_mask, bool force) {
   std::vector<cv::Point2f> existing;
   existing.reserve(tracks_.size());
   for (const roadscale::Track& track : tracks_) existing.push_back(ToCv(track.pixels.back()));
-  const std::vector<cv::Point2f> features = detector_.Detect(image_, detection_mask, existing);
+  const std::vector<cv::Point2f> features =
+      detector_.Detect(image_, detection_mask, existing, road_mask);
   for (const cv::Point2f& p : features) {
     roadscale::Track track;
     track.id = next_id_++;

@@ -80,8 +80,10 @@ class FeatureTracker {
 
   // Starts new tracks in the current frame where `detection_mask` (CV_8UC1, non-zero =
   // allowed; empty = whole image) allows, when fewer than redetect_below tracks are alive
-  // (or always with force). Returns the number of new tracks.
-  int Detect(const cv::Mat& detection_mask, bool force = false);
+  // (or always with force). `road_mask` (empty: none known) gives the road's cells their own
+  // cap (FeatureDetectorOptions::road_max_per_cell). Returns the number of new tracks.
+  int Detect(const cv::Mat& detection_mask, bool force = false,
+             const cv::Mat& road_mask = cv::Mat());
 
   // Ends the tracks with these ids (e.g. the two-view outliers).
   void Drop(const std::vector<int64_t>& ids);

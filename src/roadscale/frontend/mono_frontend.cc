@@ -81,7 +81,7 @@ FrontendFrame MonoFrontend::ProcessFrame(int frame_index, const cv::Mat& image,
     }
     tracker_.Drop(outliers);
   }
-  tracker_.Detect(masks.detection_mask);
+  tracker_.Detect(masks.detection_mask, /*force=*/false, masks.road_mask);
 
   // The rotation predicts the next frame's; without a measurement, predict none.
   const MotionStatus status = frame.motion.status;

@@ -59,6 +59,8 @@ struct FrontendMasks {
   // none): the tracks that were on it there are dropped too (FeatureTracker::DropOnMaskAt).
   int segmented_frame = -1;
   cv::Mat segmented_dynamic_mask = {};
+  // The frame's road (empty: not known), where new features get the road's cap.
+  cv::Mat road_mask = {};
 };
 
 // Gives a frame's masks once its tracks are followed into it: `correspondences` are the

@@ -40,7 +40,8 @@ class CarriedFrontend {
         service_(service),
         carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames),
         schedule_(camera, options.segmentation_schedule.keyframes),
-        carry_in_place_(options.segmentation_schedule.carry.dynamic_in_place) {}
+        carry_in_place_(options.segmentation_schedule.carry.dynamic_in_place),
+        min_carried_road_share_(options.segmentation_schedule.min_carried_road_share) {}
 
   CarriedFrame Track(const SegmentedFrame& input) {
     const int index = static_cast<int>(input.frame.index);
@@ -54,7 +55,9 @@ class CarriedFrontend {
     });
     out.road_step = carrier_.last_step();
     if (carry_in_place_) out.dynamic_mask = carrier_.last_dynamic_mask();
-    out.segmented = schedule_.Decide(out.tracked.frontend, carrier_.carry_failed());
+    const bool road_shrunk =
+        !carrier_.segmentation_pending() && carrier_.carried_road_share() < min_carried_road_share_;
+    out.segmented = schedule_.Decide(out.tracked.frontend, carrier_.carry_failed() || road_shrunk);
     if (out.segmented && !first) {
       service_.Submit(index, input.frame.image, FrameName(input.frame));
       carrier_.AddSegmented(index);
@@ -68,6 +71,7 @@ class CarriedFrontend {
   FrontendMaskCarrier carrier_;
   SegmentationSchedule schedule_;
   bool carry_in_place_;
+  double min_carried_road_share_;
   bool started_ = false;
 };
 

@@ -29,7 +29,9 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
     anchor_frame_ = frame_index;
     road_ = anchor_.road_mask;
     dynamic_ = anchor_.dynamic_mask;
-    return {anchor_.static_mask, anchor_.dynamic_mask};
+    FrontendMasks masks{anchor_.static_mask, anchor_.dynamic_mask};
+    masks.road_mask = road_;
+    return masks;
   }
 
   std::vector<Eigen::Vector2d> prev, cur;
@@ -68,12 +70,30 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
   road_ = CarryRoadMask(anchor_.road_mask, cur_from_anchor_);
   dynamic_ = CarryDynamicMask(anchor_.dynamic_mask, cur_from_anchor_, frame_index - anchor_frame_,
                               options_);
+  MeasureCarriedRoadShare();
   FrontendMasks masks{StaticMaskOf(dynamic_), dynamic_};
+  masks.road_mask = road_;
   if (due >= 0) {
     masks.segmented_frame = due;
     masks.segmented_dynamic_mask = anchor_.dynamic_mask;
   }
   return masks;
+}
+
+void FrontendMaskCarrier::MeasureCarriedRoadShare() {
+  const int anchor_road_px = anchor_.road_mask.empty() ? 0 : cv::countNonZero(anchor_.road_mask);
+  if (anchor_road_px == 0 || road_.empty()) {
+    carried_road_share_ = 1.0;
+    return;
+  }
+  // The road the scale stage gets: the carried road less the carried cars.
+  cv::Mat free_road;
+  if (dynamic_.empty()) {
+    free_road = road_;
+  } else {
+    cv::subtract(road_, dynamic_, free_road);
+  }
+  carried_road_share_ = static_cast<double>(cv::countNonZero(free_road)) / anchor_road_px;
 }
 
 }  // namespace roadscale

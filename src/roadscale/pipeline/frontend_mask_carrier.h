@@ -36,10 +36,17 @@ class FrontendMaskCarrier {
   // measured, identity in the first frame), and whether it could not.
   const Eigen::Matrix3d& last_step() const { return last_step_; }
   bool carry_failed() const { return carry_failed_; }
+  // The last frame's carried road less its carried moving objects, in pixels, against the
+  // road of the segmented frame it was carried from (1 when that frame had none), and whether
+  // a segmented frame is not yet due.
+  double carried_road_share() const { return carried_road_share_; }
+  bool segmentation_pending() const { return !pending_.empty(); }
   // The last frame's carried moving-object mask (empty before the first segmented frame).
   const cv::Mat& last_dynamic_mask() const { return dynamic_; }
 
  private:
+  void MeasureCarriedRoadShare();
+
   MaskCarryOptions options_;
   int latency_frames_;
   std::deque<int> pending_;  // segmented frames whose results are not yet due
@@ -52,6 +59,7 @@ class FrontendMaskCarrier {
   cv::Mat dynamic_;  // and its moving-object mask
   Eigen::Matrix3d last_step_ = Eigen::Matrix3d::Identity();
   bool carry_failed_ = false;
+  double carried_road_share_ = 1.0;
 };
 
 }  // namespace roadscale

@@ -19,6 +19,8 @@ void SegmentationScheduleOptions::Check() const {
   keyframes.Check();
   CheckOption(latency_frames >= 1 && latency_frames <= 30, "segmentation.latency_frames",
               "must be in 1..30 (a frame's own masks are decided after it is tracked)");
+  CheckOption(min_carried_road_share >= 0.0 && min_carried_road_share <= 1.0,
+              "segmentation.min_carried_road_share", "must be in 0..1");
   carry.Check();
 }
 
@@ -28,12 +30,12 @@ SegmentationSchedule::SegmentationSchedule(const PinholeCamera& camera,
   options_.Check();
 }
 
-bool SegmentationSchedule::Decide(const FrontendFrame& frame, bool carry_failed) {
+bool SegmentationSchedule::Decide(const FrontendFrame& frame, bool road_lost) {
   const MotionStatus status = frame.motion.status;
   if (status == MotionStatus::kOk || status == MotionStatus::kPureRotation) {
     cur_from_last_ = frame.motion.rotation * cur_from_last_;
   }
-  bool segment = !started_ || carry_failed;
+  bool segment = !started_ || road_lost;
   if (!segment) {
     Keyframe last;
     last.frame_index = last_frame_;

@@ -33,6 +33,13 @@ struct SegmentationScheduleOptions {
   // use the older masks, carried): the network runs beside the frontend instead of holding it
   // up. Fixed, so that the output never depends on thread timing.
   int latency_frames = 3;
+  // keyframes: a frame is segmented too when its carried road mask holds less than this share
+  // of the road the network saw in the frame it was carried from (0: never), unless a
+  // segmented frame is still on its way. In a jam the car moves too little for the parallax
+  // rule while the cars ahead move on: the road they uncover is never in the carried mask,
+  // which keeps only the road the camera approaches, and on the rendered jams it shrank to a
+  // quarter in 27 frames; road points and the road alignment starve.
+  double min_carried_road_share = 0.0;
   MaskCarryOptions carry;
 
   // Throws Error naming the first invalid option.
@@ -46,8 +53,9 @@ class SegmentationSchedule {
  public:
   SegmentationSchedule(const PinholeCamera& camera, const KeyframeSelectorOptions& options);
 
-  // `carry_failed`: the road's motion into this frame could not be measured.
-  bool Decide(const FrontendFrame& frame, bool carry_failed);
+  // `road_lost`: the road could not be carried into this frame (its motion not measured, or
+  // too little of it left): segment it whatever the keyframe rule says.
+  bool Decide(const FrontendFrame& frame, bool road_lost);
 
  private:
   PinholeCamera camera_;

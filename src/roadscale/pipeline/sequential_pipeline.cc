@@ -102,7 +102,9 @@ std::string SequentialPipeline::DiagnosticsCsvHeader() const {
 TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
   const SegmentationResult& segmentation = input.segmentation;
   TrackedFrame tracked = Track(input, [&](const std::vector<Correspondence>&) {
-    return FrontendMasks{segmentation.static_mask, segmentation.dynamic_mask};
+    FrontendMasks masks{segmentation.static_mask, segmentation.dynamic_mask};
+    masks.road_mask = segmentation.road_mask;
+    return masks;
   });
   FrameRecord& record = tracked.record;
   record.segmentation_ms = segmentation.milliseconds;
