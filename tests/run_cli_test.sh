@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End-to-end tests of `roadscale run`.
-# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|road|full|errors]
+# Usage: run_cli_test.sh ROADSCALE_BINARY DEFAULT_SHARED_DIR [kitti|road|full|traffic|slow|errors]
 #   kitti:  --scale oracle on the first 30 shared KITTI 00 frames writes 30 pose rows and 30
 #           frame records, and the trajectory moves forward about as far as the ground truth
 #           (skipped, exit 77, without the shared data);
@@ -9,6 +9,10 @@
 #   full:   the whole system (the shared network, road scale) on the 200 shared frames: its
 #           KITTI error, ATE and length ratio within tolerances of the measured values
 #           (skipped, exit 77, without the frames, their poses or the network);
+#   traffic: the real city drive in dense traffic (../shared/kitti_raw, no ground truth): every
+#           frame scaled, every step a creeping car's, the stop at its end standing still;
+#   slow:   KITTI 07's first 160 frames (pulling away, slow driving): length ratio and ATE
+#           within tolerances of the measured values;
 #   errors: a missing sequence, --scale oracle without ground truth, an unknown detector and
 #           an unknown scale source each fail with one line saying what is wrong.
 set -euo pipefail
@@ -69,6 +73,68 @@ assert m["ate_m"]["se3"] < 0.65, m["ate_m"]["se3"]
 assert abs(m["length_ratio"] - 1.0) < 0.02, m["length_ratio"]
 PY
   echo "run on the 200 shared KITTI 00 frames with the network: all checks passed"
+  exit 0
+fi
+
+# The car creeps behind the traffic (steps of 0-0.3 m by either segmentation schedule,
+# docs/benchmarks.md, "A step that predicts the next") and stands still over its last 23 frames.
+check_traffic_drive() {
+  python3 - "$out/run/frames.csv" "$out/run/poses_kitti.txt" <<'PY' || fail "implausible traffic drive (config $1)"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 78, len(rows)
+unscaled = [r["index"] for r in rows if r["map_scale"] == "none"]
+assert not unscaled, f"frames without a scale: {unscaled}"
+centres = [[float(v) for v in line.split()[3::4]] for line in open(sys.argv[2])]
+steps = [math.dist(a, b) for a, b in zip(centres, centres[1:])]
+assert max(steps) < 0.5, f"a step of {max(steps):.2f} m in a creep (frame {steps.index(max(steps)) + 1})"
+assert max(steps[-18:]) < 0.02, f"the stopped car moves: {steps[-18:]}"
+assert 6.0 < sum(steps) < 12.0, f"path of {sum(steps):.2f} m (measured 8.7-9.2 m)"
+PY
+}
+
+if [[ "$mode" == "traffic" ]]; then
+  drive="$shared/kitti_raw/2011_09_26_city_traffic"
+  for needed in "$drive/camera.yaml" "$drive/image_02/0000000077.png" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
+    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
+  done
+  # The default, and twice the features on the road: before the prediction after a keyframe
+  # was mended, the second made the frames that the map could not localise after one keyframe
+  # each move 0.67 m while the car was stopping (16.5 m in all).
+  printf 'Frontend: {road_max_per_cell: 8}\n' >"$out/road_features.yaml"
+  for config in none "$out/road_features.yaml"; do
+    options=()
+    [[ "$config" != none ]] && options=(--config "$config")
+    rm -rf "$out/run"
+    "$roadscale" run --images "$drive/image_02" --camera "$drive/camera.yaml" "${options[@]}" \
+      --out "$out/run" >"$out/log.txt" 2>&1 || fail "run failed: $(cat "$out/log.txt")"
+    cat "$out/log.txt"
+    check_traffic_drive "$config"
+  done
+  echo "run on the real dense-traffic drive: all checks passed"
+  exit 0
+fi
+
+if [[ "$mode" == "slow" ]]; then
+  slow="$shared/kitti/sequences/07"
+  for needed in "$slow/image_0/000159.png" "$shared/kitti/poses/07.txt" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
+    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
+  done
+  "$roadscale" run --kitti "$slow" --frames 0:160 --out "$out/run" >"$out/log.txt" 2>&1 ||
+    fail "run failed: $(cat "$out/log.txt")"
+  cat "$out/log.txt"
+  # Measured (docs/benchmarks.md, "A step that predicts the next"): length ratio 0.965, ATE se3
+  # 0.95 m; the issue's target is within 2 % of 1, not yet met, so this only holds the line.
+  python3 - "$out/run/metrics.json" <<'PY' || fail "metrics out of tolerance: $(cat "$out/run/metrics.json")"
+import json, sys
+m = json.load(open(sys.argv[1]))
+assert m["frames"] == 160, m["frames"]
+assert abs(m["length_ratio"] - 1.0) < 0.05, m["length_ratio"]
+assert m["ate_m"]["se3"] < 1.3, m["ate_m"]["se3"]
+PY
+  echo "run on the 160 shared KITTI 07 frames with the network: all checks passed"
   exit 0
 fi
 
