@@ -11,6 +11,10 @@
 # and 1.01 whole), so the worst window is printed too: windows of 20 frames in which the car
 # drove at least 1 m, ratio of the estimated to the true path length.
 #
+# A candidate default is judged with JUDGE_CONFIG (YAML blocks other than Segmentation, e.g.
+# 'Frontend: {road_max_per_cell: 8}') and JUDGE_SEGMENTATION (keys for the Segmentation block,
+# e.g. 'min_carried_road_share: 0.5'), both added to every run's configuration.
+#
 # Targets (issue 29): whole ratio within 1 % (3 % for traffic_jam), schedules within 1 % of each
 # other. Each row says PASS or FAIL against them; the last line counts the failures. The exit
 # status is 0 whatever the verdicts: this is a benchmark, not a test.
@@ -28,8 +32,10 @@ mkdir -p "$out"
 # 300 m/s"): outlines a few pixels small, a frame late, and now and then a car missed.
 printf 'Labels: {dynamic_erosion_px: 3, dynamic_lag_frames: 1, dynamic_dropout: 0.1}\n' \
   >"$out/network_like.yaml"
-printf 'Segmentation: {schedule: keyframes}\n' >"$out/schedule_keyframes.yaml"
-printf 'Segmentation: {schedule: every_frame}\n' >"$out/schedule_every_frame.yaml"
+for schedule in keyframes every_frame; do
+  printf '%s\nSegmentation: {%sschedule: %s}\n' "${JUDGE_CONFIG:-}" \
+    "${JUDGE_SEGMENTATION:+$JUDGE_SEGMENTATION, }" "$schedule" >"$out/schedule_$schedule.yaml"
+done
 
 ratios() {  # run folder -> "whole worst_window"
   python3 - "$1" <<'PY'
