@@ -61,7 +61,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -80,6 +79,7 @@
 #include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/testing/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/random.h"
 #include "roadscale/util/shared_data.h"
 
 namespace roadscale {
@@ -301,18 +301,17 @@ std::vector<PairData> KittiPairs(const std::string& sequence_dir, const std::str
 }
 
 std::vector<PairData> SyntheticPairs(int count) {
-  std::mt19937 generator(2024);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Rng rng(2024);
   const PinholeCamera camera = KittiOdometryCamera();
   std::vector<PairData> pairs;
   for (int i = 0; i < count; ++i) {
-    const double pitch = (2.0 * unit(generator) - 1.0) * 2.0 * M_PI / 180.0;
+    const double pitch = rng.Uniform(-2.0, 2.0) * M_PI / 180.0;
     testing::SceneOptions scene;
     scene.road = Plane{Eigen::Vector3d(0.0, std::cos(pitch), std::sin(pitch)), 1.65};
     scene.seed = 1000 + i;
     // The speed changes smoothly, as a car's does (the filter assumes so): 0.5 to 1.5 m.
     const double step = 1.0 + 0.5 * std::sin(2.0 * M_PI * i / 200.0);
-    const double yaw = (2.0 * unit(generator) - 1.0) * 2.0 * M_PI / 180.0;
+    const double yaw = rng.Uniform(-2.0, 2.0) * M_PI / 180.0;
     const Rigid3d motion = testing::DriveAlongRoad(scene.road, step, yaw);
     const testing::TwoViewObservations observations =
         testing::ObserveTwoViews(testing::MakeStreetScene(scene), motion, camera, 0.3, 5000 + i);

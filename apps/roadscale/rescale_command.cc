@@ -11,17 +11,17 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "roadscale/config/config_yaml.h"
 #include "roadscale/config/rescale_config.h"
 #include "roadscale/eval/trajectory_evaluation.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/odometry/odometry_config.h"
 #include "roadscale/rescale/rescale_agreement.h"
 #include "roadscale/rescale/trajectory_rescaler.h"
-#include "roadscale/segmentation/label_image_segmenter.h"
-#include "roadscale/segmentation/make_segmenter.h"
-#include "roadscale/segmentation/segmentation_model.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/line_file.h"
 
@@ -61,43 +61,28 @@ Trajectory ReadExternalTrajectory(const RescaleArguments& arguments, TrajectoryF
   return ReadTrajectory(arguments.trajectory, *format);
 }
 
+// The pose frames' segmenter, built by the library as `roadscale run` builds its own: the
+// label images, a model (the default network when its files are there, else none, said so),
+// or none.
 std::unique_ptr<Segmenter> OpenSegmenter(const RescaleArguments& arguments,
                                          std::string* description) {
-  if (!arguments.labels.empty()) {
-    SegmentationModel model;
-    model.yaml_path = arguments.labels;
-    model.backend = SegmentationBackend::kLabelImages;
-    model.label_images.folder = arguments.labels;
-    if (!fs::is_directory(model.label_images.folder)) {
-      ThrowFileError(arguments.labels, "label folder not found");
-    }
-    auto segmenter = std::make_unique<LabelImageSegmenter>(model, MaskOptions());
-    *description = segmenter->Description();
-    return segmenter;
-  }
-  if (arguments.no_segmentation) {
-    *description = "none (--no-segmentation)";
+  RunConfig config;
+  config.labels = arguments.labels;
+  if (arguments.no_segmentation) config.segmentation.model = "none";
+  if (!arguments.model.empty()) config.segmentation.model = arguments.model;
+  // One network, the pose frames in turn: one copy, both cores for its inference.
+  config.segmentation.workers = 1;
+  config.segmentation.dnn_threads = 2;
+  const std::string fallback = ResolveDefaultModel(DefaultModelPath(), &config);
+  if (!fallback.empty()) std::cerr << "roadscale: " << fallback << '\n';
+  std::vector<std::unique_ptr<Segmenter>> segmenters = MakeConfigSegmenters(config);
+  if (segmenters.empty()) {
+    *description = arguments.no_segmentation ? "none (--no-segmentation)"
+                                             : "none (the default model is missing)";
     return nullptr;
   }
-  SegmentationOptions options;
-  options.dnn_threads = 2;  // one network, the frames in turn: both cores for its inference
-  options.model = arguments.model;
-  if (options.model.empty()) {
-    // As `roadscale run`: the default network when its files are there, else none, said so.
-    const std::string path = DefaultModelPath();
-    try {
-      ReadSegmentationModel(path);
-      options.model = path;
-    } catch (const Error& error) {
-      std::cerr << "roadscale: segmentation off: model not found at " << path << " ("
-                << error.what() << ")\n";
-      *description = "none (the default model is missing)";
-      return nullptr;
-    }
-  }
-  std::unique_ptr<Segmenter> segmenter = MakeSegmenter(options);
-  *description = segmenter->Description();
-  return segmenter;
+  *description = segmenters.front()->Description();
+  return std::move(segmenters.front());
 }
 
 std::ofstream OpenOutput(const std::string& path) {

@@ -1,11 +1,10 @@
 #include "roadscale/mapping/frame_localizer.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
 
 #include "roadscale/testing/mapping_test_scene.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale {
 namespace {
@@ -21,10 +20,9 @@ struct LocalizationCase {
       landmarks[static_cast<int64_t>(id)].position = scene.points[id];
     }
     observations = scene.Observe(frame, 0.3, 11);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Rng rng(5);
     for (TrackObservation& o : observations) {
-      if (unit(rng) < outlier_share) o.pixel += Eigen::Vector2d(15.0 + 40.0 * unit(rng), 10.0);
+      if (rng.Bernoulli(outlier_share)) o.pixel += Eigen::Vector2d(rng.Uniform(15.0, 55.0), 10.0);
     }
   }
   double CentreError(const Rigid3d& cam_from_world) const {

@@ -1,10 +1,9 @@
 #include "roadscale/mapping/local_bundle_adjuster.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
 
 #include "roadscale/testing/mapping_test_scene.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale {
 namespace {
@@ -17,46 +16,66 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
 // pixels (tracks that slipped). One draw a statement here and below: the order of a call's
 // arguments is the compiler's, and the test must be the same with every compiler.
 void Corrupt(LocalWindow* window, double noise_px, double outlier_share, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, noise_px);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Rng rng(seed);
   for (Keyframe& keyframe : window->keyframes()) {
     for (auto& [id, pixel] : keyframe.observations) {
-      if (unit(rng) < outlier_share) {
-        const double dy = -20.0 - 30.0 * unit(rng);
-        const double dx = 20.0 + 30.0 * unit(rng);
+      if (rng.Bernoulli(outlier_share)) {
+        const double dy = rng.Uniform(-50.0, -20.0);
+        const double dx = rng.Uniform(20.0, 50.0);
         pixel += Eigen::Vector2d(dx, dy);
       } else {
-        const double dy = noise(rng);
-        const double dx = noise(rng);
+        const double dy = noise_px * rng.Normal();
+        const double dx = noise_px * rng.Normal();
         pixel += Eigen::Vector2d(dx, dy);
       }
     }
   }
 }
 
-Eigen::Vector3d RandomVector(std::uniform_real_distribution<double>& unit, std::mt19937& rng) {
-  const double z = unit(rng);
-  const double y = unit(rng);
-  const double x = unit(rng);
+// Each coordinate uniform in [-1, 1).
+Eigen::Vector3d RandomVector(Rng& rng) {
+  const double z = rng.Uniform(-1.0, 1.0);
+  const double y = rng.Uniform(-1.0, 1.0);
+  const double x = rng.Uniform(-1.0, 1.0);
   return {x, y, z};
 }
 
 // Moves the keyframes from `first_moved` on by up to `pose_noise` metres and 0.3 deg, and
 // every landmark by up to 3 % of its depth.
 void Perturb(LocalWindow* window, size_t first_moved, double pose_noise, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Rng rng(seed);
   for (size_t k = first_moved; k < window->keyframes().size(); ++k) {
     Rigid3d& pose = window->keyframes()[k].cam_from_world;
-    const Eigen::Vector3d axis = RandomVector(unit, rng).normalized();
+    const Eigen::Vector3d axis = RandomVector(rng).normalized();
     pose = MakeRigid3d(Eigen::AngleAxisd(0.3 * M_PI / 180.0, axis).toRotationMatrix(),
-                       pose_noise * RandomVector(unit, rng)) *
+                       pose_noise * RandomVector(rng)) *
            pose;
   }
   for (auto& [id, landmark] : window->landmarks()) {
-    landmark.position *= 1.0 + 0.03 * unit(rng);
+    landmark.position *= 1.0 + 0.03 * rng.Uniform(-1.0, 1.0);
   }
+}
+
+// The largest distance between the centres of the same keyframe in two windows.
+double MaxCentreDistance(const LocalWindow& a, const LocalWindow& b) {
+  double worst = 0.0;
+  for (size_t k = 0; k < a.keyframes().size(); ++k) {
+    worst = std::max(
+        worst,
+        (Centre(a.keyframes()[k].cam_from_world) - Centre(b.keyframes()[k].cam_from_world)).norm());
+  }
+  return worst;
+}
+
+// The largest angle between the orientations of the same keyframe in two windows, degrees.
+double MaxRotationDifferenceDeg(const LocalWindow& a, const LocalWindow& b) {
+  double worst = 0.0;
+  for (size_t k = 0; k < a.keyframes().size(); ++k) {
+    const Eigen::Matrix3d difference = a.keyframes()[k].cam_from_world.linear() *
+                                       b.keyframes()[k].cam_from_world.linear().transpose();
+    worst = std::max(worst, RotationAngle(difference) * 180.0 / M_PI);
+  }
+  return worst;
 }
 
 // The window's first-to-last keyframe distance over the true one (the window's scale).
@@ -84,21 +103,31 @@ TEST(LocalBundleAdjuster, RecoversPosesAndLandmarksFromNoiseAndOutliers) {
   LocalWindow window = testing::ExactWindow(scene, 10, 3);
   for (auto& [id, landmark] : window.landmarks()) landmark.is_road = false;  // reprojection only
   Corrupt(&window, 0.3, 0.1, 1);
+  // What the same observations give from the exact poses: the adjustment's optimum, which it
+  // must reach from the perturbed start.
+  LocalWindow from_exact = window;
   Perturb(&window, 2, 0.3, 2);  // the two oldest keyframes hold the gauge and the scale
   ASSERT_GT(MaxCentreError(window, scene), 0.1);
 
   LocalBundleAdjusterOptions options;
   options.max_iterations = 30;
   const BundleAdjustmentReport report = AdjustLocalWindow(scene.camera, 1.65, options, &window);
+  AdjustLocalWindow(scene.camera, 1.65, options, &from_exact);
   EXPECT_TRUE(report.ran);
   EXPECT_FALSE(report.scale_from_road);
   EXPECT_LT(report.final_cost, report.initial_cost);  // the outliers keep most of it
-  // The two oldest keyframes hold the gauge and the scale (no road landmarks).
-  EXPECT_LT(MaxCentreError(window, scene), 0.03);
+  // From 0.3-0.5 m and 0.3 deg off to the optimum (60 draws of scene, noise and perturbation:
+  // at most 9 mm and 0.004 deg from it).
+  EXPECT_LT(MaxCentreDistance(window, from_exact), 0.02);
+  EXPECT_LT(MaxRotationDifferenceDeg(window, from_exact), 0.01);
+  // The optimum itself is as far from the truth as the noise and the outliers put it: the two
+  // oldest keyframes, 3 m apart, carry the scale over the window's 27 m (no road landmarks).
+  // The same 60 draws: at most 0.12 m and 0.034 deg (median 0.03 m and 0.018 deg).
+  EXPECT_LT(MaxCentreError(window, scene), 0.15);
   for (const Keyframe& keyframe : window.keyframes()) {
     const Eigen::Matrix3d error = keyframe.cam_from_world.linear() *
                                   scene.cam_from_world[keyframe.frame_index].linear().transpose();
-    EXPECT_LT(RotationAngle(error) * 180.0 / M_PI, 0.02);
+    EXPECT_LT(RotationAngle(error) * 180.0 / M_PI, 0.05);
   }
   // Most outliers removed, few good observations lost.
   EXPECT_GT(report.removed_observations, 0);

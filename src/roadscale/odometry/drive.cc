@@ -1,5 +1,6 @@
 #include "roadscale/odometry/drive.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <utility>
 
@@ -138,7 +139,19 @@ Drive::Report Drive::WriteReport(const std::string& title) const {
   const RunConfig& config = setup_.config;
   const CameraSetup& camera = source_->camera();
   const bool keyframe_mode = config.pipeline.mapping.mode == MappingOptions::Mode::kKeyframe;
-  RunReportData data;
+  // The ground truth of the frames run, when the input has a pose for each of them.
+  Trajectory gt;
+  const Trajectory* ground_truth = source_->ground_truth();
+  const size_t frames = records_.size();
+  const bool with_ground_truth =
+      ground_truth != nullptr && ground_truth->world_from_cam.size() >= frames;
+  if (with_ground_truth) {
+    const auto& poses = ground_truth->world_from_cam;
+    gt.world_from_cam.assign(poses.begin(), poses.begin() + frames);
+    const auto& times = ground_truth->timestamps;
+    gt.timestamps.assign(times.begin(), times.begin() + std::min(frames, times.size()));
+  }
+  RunReportData data(records_, world_from_cam_, gt.world_from_cam);
   data.title = title.empty() ? "roadscale run: " + source_->Describe() : title;
   data.inputs = {
       {"input", source_->Describe()},
@@ -153,18 +166,11 @@ Drive::Report Drive::WriteReport(const std::string& title) const {
        std::to_string(result_.summary.segmented_frames) + " of " +
            std::to_string(result_.summary.frames) + " (schedule " +
            SegmentationScheduleModeName(config.pipeline.segmentation_schedule.mode) + ")"}};
-  data.records = records_;
   data.scale_diagnostics_header =
       keyframe_mode ? MappedFrameCsvHeader() : scale_source_->DiagnosticsCsvHeader();
-  data.est_world_from_cam = world_from_cam_;
   data.wall_time_s = result_.summary.wall_s;
   Report report;
-  const Trajectory* ground_truth = source_->ground_truth();
-  if (ground_truth != nullptr && ground_truth->world_from_cam.size() >= data.records.size()) {
-    Trajectory gt = *ground_truth;
-    gt.world_from_cam.resize(data.records.size());
-    if (gt.timestamps.size() > data.records.size()) gt.timestamps.resize(data.records.size());
-    data.gt_world_from_cam = gt.world_from_cam;
+  if (with_ground_truth) {
     WriteKittiTrajectory(OutPath(setup_, "gt_poses_kitti.txt"), gt);
     report.ground_truth_written = true;
   }

@@ -27,6 +27,7 @@
 #include "roadscale/segmentation/label_image_segmenter.h"
 #include "roadscale/synth/scene_writer.h"
 #include "roadscale/synth/synthetic_scene.h"
+#include "roadscale/testing/late_oracle.h"
 #include "roadscale/testing/temp_dir.h"
 #include "roadscale/util/error.h"
 
@@ -97,22 +98,6 @@ TEST(SequentialPipelineSynthetic, OracleScaleFollowsTheTrueMotionOfAnUrbanScene)
   EXPECT_GT(path, 10.0);
   EXPECT_LT(drift, 0.02 * path);
 }
-
-// The oracle's lengths from frame `first_scaled` on only: the frames before it have no scale.
-class LateOracle : public ScaleSource {
- public:
-  LateOracle(Trajectory ground_truth, size_t first_scaled)
-      : oracle_(std::move(ground_truth)), first_scaled_(first_scaled) {}
-  std::string Name() const override { return "late oracle"; }
-  ScaleResult StepLength(const ScaleQuery& query) override {
-    if (query.position < first_scaled_) return ScaleResult();
-    return oracle_.StepLength(query);
-  }
-
- private:
-  OracleScaleSource oracle_;
-  size_t first_scaled_;
-};
 
 // The oracle's lengths times `factor`: a scale source gone wrong (h0 in the wrong unit).
 class ScaledOracle : public ScaleSource {
@@ -186,7 +171,7 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
   // Waiting: frames 1-7 take frame 8's length scaled by their parallax.
   {
     const auto source = OpenFrameSource(source_options);
-    LateOracle late(gt, kFirstScaled);
+    testing::LateOracle late(gt, kFirstScaled);
     const std::string out = dir.File("backfilled");
     RunSequentialPipeline(*source, late, FrameToFrame(), out);
     const std::vector<std::string> status = Column(out + "/frames.csv", "status");
@@ -215,7 +200,7 @@ TEST(SequentialPipelineSynthetic, FramesBeforeTheFirstScaleAreBackfilledOrLeftUn
   // Not waiting long enough: the first frames are written with unit steps, flagged.
   {
     const auto source = OpenFrameSource(source_options);
-    LateOracle late(gt, kFirstScaled);
+    testing::LateOracle late(gt, kFirstScaled);
     PipelineOptions options = FrameToFrame();
     options.max_frames_before_first_scale = 3;
     const std::string out = dir.File("unscaled");

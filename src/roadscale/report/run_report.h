@@ -12,14 +12,22 @@
 
 namespace roadscale {
 
-// What a finished run leaves for its report.
+// What a finished run leaves for its report. The records and poses are the run's own,
+// referred to, not copied (a long drive's records are megabytes): they must outlive it.
 struct RunReportData {
+  RunReportData(const std::vector<FrameRecord>& records,
+                const std::vector<Rigid3d>& est_world_from_cam,
+                const std::vector<Rigid3d>& gt_world_from_cam)
+      : records(records),
+        est_world_from_cam(est_world_from_cam),
+        gt_world_from_cam(gt_world_from_cam) {}
+
   std::string title;
   std::vector<std::pair<std::string, std::string>> inputs;
-  std::vector<FrameRecord> records;         // one per frame, in order
-  std::string scale_diagnostics_header;     // the scale source's frames.csv columns
-  std::vector<Rigid3d> est_world_from_cam;  // one per record
-  std::vector<Rigid3d> gt_world_from_cam;   // one per record, or empty
+  const std::vector<FrameRecord>& records;         // one per frame, in order
+  std::string scale_diagnostics_header;            // the scale source's frames.csv columns
+  const std::vector<Rigid3d>& est_world_from_cam;  // one per record
+  const std::vector<Rigid3d>& gt_world_from_cam;   // one per record, or empty
   std::optional<double> wall_time_s;
 };
 

@@ -54,14 +54,15 @@ TEST(RunReport, NamesALongBackfilledStartOnly) {
 }
 
 TEST(RunReport, SeriesTakeTheScaleSourcesColumnsAndTheTrueStepLength) {
-  RunReportData data;
-  data.records = Records({"first", "ok", "ok"});
-  data.records[1].scale_diagnostics_csv = "0.5,0.75,10";
-  data.records[2].scale_diagnostics_csv = "nan,0.8,";
+  std::vector<FrameRecord> records = Records({"first", "ok", "ok"});
+  records[1].scale_diagnostics_csv = "0.5,0.75,10";
+  records[2].scale_diagnostics_csv = "nan,0.8,";
+  std::vector<Rigid3d> gt(3, Rigid3d::Identity());
+  gt[1].translation() = Eigen::Vector3d(0, 0, 1);
+  gt[2].translation() = Eigen::Vector3d(0, 0, 3);
+  const std::vector<Rigid3d> no_poses;
+  RunReportData data(records, no_poses, gt);
   data.scale_diagnostics_header = "road_raw_scale,road_scale,road_triangulated";
-  data.gt_world_from_cam = {Rigid3d::Identity(), Rigid3d::Identity(), Rigid3d::Identity()};
-  data.gt_world_from_cam[1].translation() = Eigen::Vector3d(0, 0, 1);
-  data.gt_world_from_cam[2].translation() = Eigen::Vector3d(0, 0, 3);
   const std::vector<FrameSeries> series = RunFrameSeries(data);
   const auto find = [&](const std::string& name) -> const FrameSeries& {
     for (const FrameSeries& s : series) {
@@ -82,15 +83,16 @@ TEST(RunReport, SeriesTakeTheScaleSourcesColumnsAndTheTrueStepLength) {
 }
 
 TEST(RunReport, KeyframeModeSeriesAreTheStepsTheMapAndTheAdjustmentPerKeyframe) {
-  RunReportData data;
-  data.records = Records({"first", "ok", "ok"});
-  data.records[1].step_length_m = 0.9;
-  data.records[2].step_length_m = 1.1;
-  data.records[1].scale_valid = data.records[2].scale_valid = true;
+  std::vector<FrameRecord> records = Records({"first", "ok", "ok"});
+  records[1].step_length_m = 0.9;
+  records[2].step_length_m = 1.1;
+  records[1].scale_valid = records[2].scale_valid = true;
+  records[0].scale_diagnostics_csv = "1,0,0,0";
+  records[1].scale_diagnostics_csv = "0,150,0,40";
+  records[2].scale_diagnostics_csv = "1,170,35.5,42";
+  const std::vector<Rigid3d> no_poses;
+  RunReportData data(records, no_poses, no_poses);
   data.scale_diagnostics_header = "keyframe,landmarks_seen,ba_ms,window_road_landmarks";
-  data.records[0].scale_diagnostics_csv = "1,0,0,0";
-  data.records[1].scale_diagnostics_csv = "0,150,0,40";
-  data.records[2].scale_diagnostics_csv = "1,170,35.5,42";
   const std::vector<FrameSeries> series = RunFrameSeries(data);
   const auto find = [&](const std::string& name) -> const FrameSeries* {
     for (const FrameSeries& s : series) {

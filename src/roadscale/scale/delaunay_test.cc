@@ -1,11 +1,12 @@
 #include "roadscale/scale/delaunay.h"
 
-#include <random>
 #include <set>
 
 #include <opencv2/imgproc.hpp>
 
 #include <gtest/gtest.h>
+
+#include "roadscale/util/random.h"
 
 namespace roadscale {
 namespace {
@@ -41,14 +42,12 @@ TEST(Delaunay, PointInsideTriangleGivesThreeTriangles) {
 }
 
 TEST(Delaunay, RandomPointsFollowEulerAndEmptyCircle) {
-  std::mt19937 generator(7);
-  std::uniform_real_distribution<double> x(0.0, 1241.0);
-  std::uniform_real_distribution<double> y(190.0, 376.0);
+  Rng rng(7);
   std::vector<Eigen::Vector2d> points;
   std::vector<cv::Point2f> cv_points;
   for (int i = 0; i < 300; ++i) {
-    const double row = y(generator);  // one draw a statement: argument order is the compiler's
-    points.emplace_back(x(generator), row);
+    const double row = rng.Uniform(190.0, 376.0);        // one draw a statement: argument order is
+    points.emplace_back(rng.Uniform(0.0, 1241.0), row);  // the compiler's
     cv_points.emplace_back(static_cast<float>(points.back().x()),
                            static_cast<float>(points.back().y()));
   }

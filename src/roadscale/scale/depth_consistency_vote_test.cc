@@ -1,7 +1,5 @@
 #include "roadscale/scale/depth_consistency_vote.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
 
 #include "roadscale/geometry/pinhole_camera.h"

@@ -1,12 +1,12 @@
 #include "roadscale/scale/road_homography_refit.h"
 
 #include <cmath>
-#include <random>
 
 #include <gtest/gtest.h>
 
 #include "roadscale/geometry/angles.h"
 #include "roadscale/testing/synthetic_road_scene.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/Geometry>
 
@@ -23,16 +23,17 @@ struct RoadTracks {
 // (metric), with Gaussian pixel noise on the current pixels.
 RoadTracks Track(const Plane& road, const Rigid3d& motion, double noise_px, uint32_t seed) {
   const PinholeCamera camera = KittiOdometryCamera();
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> noise(0.0, noise_px);
+  Rng rng(seed);
   RoadTracks tracks;
   for (const Eigen::Vector3d& point :
        testing::PointsOnPlane(road, 150, -4.0, 4.0, 5.0, 20.0, seed)) {
     const Eigen::Vector3d moved = motion * point;
     if (moved.z() <= 0.0) continue;
     const Eigen::Vector2d prev = camera.Project(point);
-    const double dy = noise(generator);  // one draw a statement: argument order is the compiler's
-    const Eigen::Vector2d cur = camera.Project(moved) + Eigen::Vector2d(noise(generator), dy);
+    // One draw a statement: argument order is the compiler's.
+    const double dy = noise_px * rng.Normal();
+    const Eigen::Vector2d cur =
+        camera.Project(moved) + Eigen::Vector2d(noise_px * rng.Normal(), dy);
     if (!camera.IsInside(prev) || !camera.IsInside(cur)) continue;
     tracks.indices.push_back(static_cast<int>(tracks.prev.size()));
     tracks.prev.push_back(prev);

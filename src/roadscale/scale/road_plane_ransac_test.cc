@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include <gtest/gtest.h>
 
 #include "roadscale/geometry/angles.h"
 #include "roadscale/testing/synthetic_road_scene.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/random.h"
 
 namespace roadscale {
 namespace {
@@ -28,19 +28,15 @@ NoisyRoad MakeNoisyRoad(uint32_t seed) {
                       std::sin(3.0 * kRadiansPerDegree))
           .normalized();
   scene.road.height = 1.65;
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> noise(0.0, 0.01 * 1.65);
+  Rng rng(seed);
   for (const auto& point : testing::PointsOnPlane(scene.road, 300, -6, 6, 4, 20, seed + 1)) {
-    scene.points.push_back(point + noise(generator) * scene.road.normal);
+    scene.points.push_back(point + 0.01 * 1.65 * rng.Normal() * scene.road.normal);
   }
-  std::uniform_real_distribution<double> x(-8.0, 8.0);
-  std::uniform_real_distribution<double> y(-2.0, 1.5);
-  std::uniform_real_distribution<double> z(4.0, 25.0);
   for (int i = 0; i < 100; ++i) {
     // One draw a statement: the order of a call's arguments is the compiler's.
-    const double depth = z(generator);
-    const double height = y(generator);
-    scene.points.emplace_back(x(generator), height, depth);
+    const double depth = rng.Uniform(4.0, 25.0);
+    const double height = rng.Uniform(-2.0, 1.5);
+    scene.points.emplace_back(rng.Uniform(-8.0, 8.0), height, depth);
   }
   const Plane wall{Eigen::Vector3d::UnitX(), 6.5};
   for (const auto& point : testing::PointsOnPlane(wall, 100, -2.0, 1.6, 5, 25, seed + 2)) {
@@ -58,11 +54,16 @@ TEST(RoadPlaneRansac, RecoversHeightWithinHalfAPercentAtFortyPercentOutliers) {
     EXPECT_LT(std::abs(fit.plane.height / 1.65 - 1.0), 0.005) << "seed " << seed;
     EXPECT_LT(AngleBetween(fit.plane.normal, scene.road.normal), 0.5 * kRadiansPerDegree)
         << "seed " << seed;
-    // The outliers are 40 % of the points; a few of them lie near the road by chance.
+    // The outliers are 40 % of the points; a few of them lie near the road by chance (9 on
+    // average, up to 20 in 1,000 seeds), and those only may be inliers: within the inlier
+    // band, 5 % of h, of the true road, widened by 2 cm for the fitted plane's own error
+    // (1,000 seeds: at most 9.2 cm from the road).
     EXPECT_NEAR(fit.inlier_ratio, 0.6, 0.05) << "seed " << seed;
-    int outlier_inliers = 0;
-    for (int index : fit.inliers) outlier_inliers += index >= 300 ? 1 : 0;
-    EXPECT_LT(outlier_inliers, 15) << "seed " << seed;
+    for (int index : fit.inliers) {
+      if (index < 300) continue;
+      EXPECT_LT(std::abs(scene.road.SignedDistance(scene.points[index])), 0.05 * 1.65 + 0.02)
+          << "seed " << seed << ", outlier " << index;
+    }
   }
 }
 

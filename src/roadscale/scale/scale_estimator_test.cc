@@ -53,10 +53,12 @@ TEST(ScaleEstimator, StreetWithWallsAndACarGivesScaleWithinOnePercent) {
     EXPECT_NEAR(estimate.inlier_ratio,
                 static_cast<double>(estimate.num_ransac_inliers) / estimate.num_after_road_model,
                 1e-12);
-    // Wall and car points within a few centimetres of the road are road as far as geometry
-    // can tell; nothing higher may be an inlier.
+    // Wall and car points near the road are road as far as geometry can tell: RANSAC keeps
+    // the triangulated points within 5 % of h (8 cm), and 0.3 px of noise moves a point 10-30 m
+    // ahead by centimetres more. Nothing higher may be an inlier (200 seeds: the highest true
+    // height of an inlier at most 0.18 m, above 0.12 m in one of 20; the car's roof is at 1.5 m).
     for (int track : estimate.road_track_indices) {
-      EXPECT_LT(std::abs(road.SignedDistance(pair.points[track])), 0.1) << "seed " << seed;
+      EXPECT_LT(std::abs(road.SignedDistance(pair.points[track])), 0.25) << "seed " << seed;
     }
     EXPECT_FALSE(estimate.used_road_mask);
   }

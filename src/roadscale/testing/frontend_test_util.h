@@ -1,13 +1,13 @@
 #pragma once
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "roadscale/frontend/two_view_motion.h"
 #include "roadscale/geometry/pinhole_camera.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -21,19 +21,15 @@ namespace roadscale::testing {
 // (x - shift_x, y - shift_y): the texture moves by +shift.
 inline cv::Mat SyntheticTexture(int width, int height, double shift_x = 0.0, double shift_y = 0.0,
                                 unsigned seed = 7) {
-  std::mt19937 rng(seed);
+  Rng rng(seed);
   const int margin = 200;  // blobs also outside the image, so that shifted content exists
-  std::uniform_real_distribution<double> ux(-margin, width + margin);
-  std::uniform_real_distribution<double> uy(-margin, height + margin);
-  std::uniform_real_distribution<double> log_radius(std::log(1.5), std::log(16.0));
-  std::uniform_real_distribution<double> amplitude(-60.0, 60.0);
   const int blobs = (width + 2 * margin) * (height + 2 * margin) / 60;
   cv::Mat accumulator(height, width, CV_64FC1, cv::Scalar(128.0));
   for (int b = 0; b < blobs; ++b) {
-    const double bx = ux(rng) + shift_x;
-    const double by = uy(rng) + shift_y;
-    const double r = std::exp(log_radius(rng));
-    const double a = amplitude(rng);
+    const double bx = rng.Uniform(-margin, width + margin) + shift_x;
+    const double by = rng.Uniform(-margin, height + margin) + shift_y;
+    const double r = std::exp(rng.Uniform(std::log(1.5), std::log(16.0)));
+    const double a = rng.Uniform(-60.0, 60.0);
     const int reach = static_cast<int>(std::ceil(3.5 * r));
     const int x0 = std::max(0, static_cast<int>(std::floor(bx)) - reach);
     const int x1 = std::min(width - 1, static_cast<int>(std::ceil(bx)) + reach);
@@ -74,35 +70,30 @@ inline TwoViewScene MakeTwoViewScene(const PinholeCamera& camera, const Eigen::M
                                      const Eigen::Vector3d& t, int count, double noise_px,
                                      double outlier_ratio = 0.0, unsigned seed = 3,
                                      double z_min = 4.0, double z_max = 60.0) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> ux(-20.0, 20.0);
-  std::uniform_real_distribution<double> uy(-6.0, 2.0);
-  std::uniform_real_distribution<double> uz(z_min, z_max);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> noise(0.0, noise_px);
+  Rng rng(seed);
   TwoViewScene scene;
   while (static_cast<int>(scene.correspondences.size()) < count) {
     // One draw a statement: the order of a call's arguments is the compiler's, and the scene
     // must be the same with every compiler.
-    const double z = uz(rng);
-    const double y = uy(rng);
-    const double x = ux(rng);
+    const double z = rng.Uniform(z_min, z_max);
+    const double y = rng.Uniform(-6.0, 2.0);
+    const double x = rng.Uniform(-20.0, 20.0);
     const Eigen::Vector3d X(x, y, z);
     const Eigen::Vector3d Y = R * X + t;
     if (Y.z() < 1.0) continue;
     Correspondence c;
     c.track_id = static_cast<int64_t>(scene.correspondences.size()) * 3 + 1;
-    const double prev_dy = noise(rng);
-    const double prev_dx = noise(rng);
-    const double cur_dy = noise(rng);
-    const double cur_dx = noise(rng);
+    const double prev_dy = noise_px * rng.Normal();
+    const double prev_dx = noise_px * rng.Normal();
+    const double cur_dy = noise_px * rng.Normal();
+    const double cur_dx = noise_px * rng.Normal();
     c.prev = camera.Project(X) + Eigen::Vector2d(prev_dx, prev_dy);
     c.cur = camera.Project(Y) + Eigen::Vector2d(cur_dx, cur_dy);
     if (!camera.IsInside(c.prev) || !camera.IsInside(c.cur)) continue;
-    const bool outlier = unit(rng) < outlier_ratio;
+    const bool outlier = rng.Bernoulli(outlier_ratio);
     if (outlier) {
-      const double a = 2.0 * M_PI * unit(rng);
-      const double r = 5.0 + 55.0 * unit(rng);
+      const double a = rng.Uniform(0.0, 2.0 * M_PI);
+      const double r = rng.Uniform(5.0, 60.0);
       c.cur += r * Eigen::Vector2d(std::cos(a), std::sin(a));
     }
     scene.correspondences.push_back(c);

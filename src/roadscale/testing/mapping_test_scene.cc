@@ -1,31 +1,31 @@
 #include "roadscale/testing/mapping_test_scene.h"
 
 #include <cmath>
-#include <random>
+
+#include "roadscale/util/random.h"
 
 namespace roadscale::testing {
 
 MappingTestScene MappingTestScene::Street(int frames, double step_m, double yaw_deg_per_frame,
                                           uint32_t seed) {
   MappingTestScene scene;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Rng rng(seed);
   const double length = frames * step_m + 40.0;
   // Road: a textured lane and its neighbours.
   // One draw a statement here and below: the order of a call's arguments is the compiler's,
   // and the scene must be the same with every compiler.
   for (int i = 0; i < static_cast<int>(length * 12); ++i) {
-    const double z = 2.0 + length * unit(rng);
-    const double x = -5.0 + 10.0 * unit(rng);
+    const double z = rng.Uniform(2.0, 2.0 + length);
+    const double x = rng.Uniform(-5.0, 5.0);
     scene.points.emplace_back(x, scene.camera_height, z);
     scene.is_road.push_back(true);
   }
   // Facades on both sides, from the road up to 8 m above it.
   for (int i = 0; i < static_cast<int>(length * 12); ++i) {
-    const double side = unit(rng) < 0.5 ? -1.0 : 1.0;
-    const double z = 2.0 + length * unit(rng);
-    const double y = scene.camera_height - 8.0 * unit(rng);
-    const double x = side * (7.0 + unit(rng));
+    const double side = rng.Bernoulli(0.5) ? -1.0 : 1.0;
+    const double z = rng.Uniform(2.0, 2.0 + length);
+    const double y = scene.camera_height - rng.Uniform(0.0, 8.0);
+    const double x = side * rng.Uniform(7.0, 8.0);
     scene.points.emplace_back(x, y, z);
     scene.is_road.push_back(false);
   }
@@ -43,8 +43,7 @@ MappingTestScene MappingTestScene::Street(int frames, double step_m, double yaw_
 
 std::vector<TrackObservation> MappingTestScene::Observe(int frame, double noise_px,
                                                         uint32_t seed) const {
-  std::mt19937 rng(seed + 7919u * static_cast<uint32_t>(frame));
-  std::normal_distribution<double> noise(0.0, noise_px > 0.0 ? noise_px : 1.0);
+  Rng rng(seed + 7919u * static_cast<uint32_t>(frame));
   std::vector<TrackObservation> observations;
   for (size_t id = 0; id < points.size(); ++id) {
     const Eigen::Vector3d point_cam = cam_from_world[frame] * points[id];
@@ -52,8 +51,8 @@ std::vector<TrackObservation> MappingTestScene::Observe(int frame, double noise_
     Eigen::Vector2d pixel = camera.Project(point_cam);
     if (!camera.IsInside(pixel)) continue;
     if (noise_px > 0.0) {
-      const double dy = noise(rng);
-      const double dx = noise(rng);
+      const double dy = noise_px * rng.Normal();
+      const double dx = noise_px * rng.Normal();
       pixel += Eigen::Vector2d(dx, dy);
     }
     observations.push_back({static_cast<int64_t>(id), pixel});

@@ -1,9 +1,10 @@
 #include "roadscale/testing/synthetic_road_scene.h"
 
 #include <algorithm>
-#include <random>
 
 #include <opencv2/imgproc.hpp>
+
+#include "roadscale/util/random.h"
 
 namespace roadscale::testing {
 namespace {
@@ -20,9 +21,7 @@ void PlaneAxes(const Plane& plane, Eigen::Vector3d* across, Eigen::Vector3d* alo
 std::vector<Eigen::Vector3d> PointsOnPlane(const Plane& plane, int count, double x_min,
                                            double x_max, double z_min, double z_max,
                                            uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> lateral(x_min, x_max);
-  std::uniform_real_distribution<double> depth(z_min, z_max);
+  Rng rng(seed);
   Eigen::Vector3d across;
   Eigen::Vector3d along;
   PlaneAxes(plane, &across, &along);
@@ -32,16 +31,15 @@ std::vector<Eigen::Vector3d> PointsOnPlane(const Plane& plane, int count, double
   for (int i = 0; i < count; ++i) {
     // One draw a statement here and below: the order of an expression's operands is the
     // compiler's, and a seed must give the same scene with every compiler.
-    const double ahead = depth(generator);
-    const double aside = lateral(generator);
+    const double ahead = rng.Uniform(z_min, z_max);
+    const double aside = rng.Uniform(x_min, x_max);
     points.push_back(foot + aside * across + ahead * along);
   }
   return points;
 }
 
 std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
-  std::mt19937 generator(options.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Rng rng(options.seed);
   std::vector<ScenePoint> scene;
   for (const Eigen::Vector3d& point :
        PointsOnPlane(options.road, options.num_road, -7.0, 7.0, 4.0, 30.0, options.seed + 1)) {
@@ -55,15 +53,15 @@ std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
   // Walls 8 m to either side, from the road up to 6 m.
   for (int i = 0; i < options.num_wall; ++i) {
     const double side = i % 2 == 0 ? -8.0 : 8.0;
-    const double height = 6.0 * unit(generator);
-    const double ahead = 6.0 + 44.0 * unit(generator);
+    const double height = rng.Uniform(0.0, 6.0);
+    const double ahead = rng.Uniform(6.0, 50.0);
     scene.push_back({foot + side * across + ahead * along + height * up, SceneLabel::kWall});
   }
   // A parked car: a 1.8 m x 1.5 m x 4.5 m box on the road, 2.5 m to the right, 9 m ahead;
   // points on its rear face, its left side and its roof.
   for (int i = 0; i < options.num_car; ++i) {
-    const double a = unit(generator);
-    const double b = unit(generator);
+    const double a = rng.Uniform();
+    const double b = rng.Uniform();
     Eigen::Vector3d offset;
     switch (i % 3) {
       case 0:
@@ -80,9 +78,9 @@ std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
   }
   // Trees and buildings above the camera, far ahead.
   for (int i = 0; i < options.num_above_horizon; ++i) {
-    const double height = options.road.height + 1.0 + 8.0 * unit(generator);
-    const double ahead = 20.0 + 60.0 * unit(generator);
-    const double aside = -15.0 + 30.0 * unit(generator);
+    const double height = options.road.height + rng.Uniform(1.0, 9.0);
+    const double ahead = rng.Uniform(20.0, 80.0);
+    const double aside = rng.Uniform(-15.0, 15.0);
     scene.push_back(
         {foot + aside * across + ahead * along + height * up, SceneLabel::kAboveHorizon});
   }
@@ -92,8 +90,7 @@ std::vector<ScenePoint> MakeStreetScene(const SceneOptions& options) {
 TwoViewObservations ObserveTwoViews(const std::vector<ScenePoint>& scene,
                                     const Rigid3d& cur_from_prev, const PinholeCamera& camera,
                                     double noise_px, uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> noise(0.0, 1.0);
+  Rng rng(seed);
   TwoViewObservations observations;
   for (const ScenePoint& scene_point : scene) {
     const Eigen::Vector3d in_cur = cur_from_prev * scene_point.point;
@@ -101,10 +98,10 @@ TwoViewObservations ObserveTwoViews(const std::vector<ScenePoint>& scene,
     Eigen::Vector2d prev = camera.Project(scene_point.point);
     Eigen::Vector2d cur = camera.Project(in_cur);
     if (noise_px > 0.0) {
-      const double prev_dy = noise(generator);
-      const double prev_dx = noise(generator);
-      const double cur_dy = noise(generator);
-      const double cur_dx = noise(generator);
+      const double prev_dy = rng.Normal();
+      const double prev_dx = rng.Normal();
+      const double cur_dy = rng.Normal();
+      const double cur_dx = rng.Normal();
       prev += noise_px * Eigen::Vector2d(prev_dx, prev_dy);
       cur += noise_px * Eigen::Vector2d(cur_dx, cur_dy);
     }
