@@ -231,7 +231,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
       !BootstrapPose(frontend, &cam_from_world)) {
     reason = KeyframeReason::kNone;  // no two-view geometry yet: wait for more parallax
   }
-  Rigid3d cur_from_prev = cam_from_world * last_cam_from_world_.inverse();
+  double step_length = (cam_from_world * last_cam_from_world_.inverse()).translation().norm();
   if (reason != KeyframeReason::kNone) {
     mapped.keyframe = true;
     mapped.keyframe_reason = KeyframeReasonName(reason);
@@ -240,19 +240,25 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
         (Centre(cam_from_world) - Centre(last_keyframe.cam_from_world)).norm();
     AddKeyframe(frontend, road_mask, image, timestamp, cam_from_world, &mapped);
     cam_from_world = window_.keyframes().back().cam_from_world;
-    // The step that predicts the next frame is the one the frame arrived with, in the scale
-    // the adjustment gave the keyframe interval. The adjusted keyframe against the previous
-    // frame's arrival pose would add the adjustment's correction of the whole window to one
-    // step: on the real traffic drive a 0.12 m step became 0.67 m, and the next 14 frames,
-    // which the map could not localise, each moved that far while the car was stopping.
+    // The step's length is the one the frame arrived with, in the scale the adjustment gave
+    // the keyframe interval. The adjusted keyframe against the previous frame's arrival pose
+    // would add the adjustment's whole correction of the window to one step: on the real
+    // traffic drive a 0.12 m step became 0.67 m, and the next 14 frames, which the map could
+    // not localise, each moved that far while the car was stopping. Its direction stays the
+    // adjusted one: where the map's direction drifts (a truck's tracks in it), the adjustment's
+    // correction is the step's vote for the frame pair against the map (PairOutvotesMap).
     const Keyframe* before = window_.FindKeyframe(keyframe_before);
     if (before != nullptr && arrival_baseline > 0.0) {
-      cur_from_prev.translation() *=
+      step_length *=
           (Centre(cam_from_world) - Centre(before->cam_from_world)).norm() / arrival_baseline;
     }
   }
 
-  if (!mapped.stationary) last_cur_from_prev_ = cur_from_prev;
+  if (!mapped.stationary) {
+    last_cur_from_prev_ = cam_from_world * last_cam_from_world_.inverse();
+    const double adjusted_length = last_cur_from_prev_.translation().norm();
+    if (adjusted_length > 0.0) last_cur_from_prev_.translation() *= step_length / adjusted_length;
+  }
   last_cam_from_world_ = cam_from_world;
   pending.keyframe_before = window_.keyframes().back().frame_index;
   pending.keyframe_from_cam = window_.keyframes().back().cam_from_world * cam_from_world.inverse();
