@@ -125,8 +125,10 @@ if [[ "$mode" == "slow" ]]; then
   "$roadscale" run --kitti "$slow" --frames 0:160 --out "$out/run" >"$out/log.txt" 2>&1 ||
     fail "run failed: $(cat "$out/log.txt")"
   cat "$out/log.txt"
-  # Measured (docs/benchmarks.md, "A step that predicts the next"): length ratio 0.965, ATE se3
-  # 0.95 m; the issue's target is within 2 % of 1, not yet met, so this only holds the line.
+  # Measured (docs/benchmarks.md, "A step that predicts the next"): length ratio 0.980, ATE se3
+  # 0.67 m (0.965 and 0.95 m before fresh masks where the carried road runs out); the issue's
+  # target is within 2 % of 1 with no 8-frame window more than 5 % off, not yet met (the
+  # pull-away is 9-12 % short), so this holds the line at 5 %.
   python3 - "$out/run/metrics.json" <<'PY' || fail "metrics out of tolerance: $(cat "$out/run/metrics.json")"
 import json, sys
 m = json.load(open(sys.argv[1]))
