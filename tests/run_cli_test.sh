@@ -25,6 +25,14 @@ scratch="$out"
 # shellcheck source=cli_checks.sh
 source "$(dirname "$0")/cli_checks.sh"
 
+# Skips the test (exit 77, as CTest's SKIP_RETURN_CODE) when a shared file it needs is missing.
+skip_unless_shared() {  # FILE...
+  local needed
+  for needed in "$@"; do
+    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
+  done
+}
+
 sequence="$shared/kitti/sequences/00"
 if [[ "$mode" == "kitti" ]]; then
   if [[ ! -f "$sequence/calib.txt" || ! -f "$shared/kitti/poses/00.txt" ]]; then
@@ -51,10 +59,8 @@ if [[ "$mode" == "kitti" ]]; then
 fi
 
 if [[ "$mode" == "full" ]]; then
-  for needed in "$sequence/image_0/000199.png" "$shared/kitti/poses/00.txt" \
-    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
-    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
-  done
+  skip_unless_shared "$sequence/image_0/000199.png" "$shared/kitti/poses/00.txt" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"
   "$roadscale" run --kitti "$sequence" --out "$out/run" >"$out/log.txt" 2>&1 ||
     fail "run failed: $(cat "$out/log.txt")"
   cat "$out/log.txt"
@@ -95,10 +101,8 @@ PY
 
 if [[ "$mode" == "traffic" ]]; then
   drive="$shared/kitti_raw/2011_09_26_city_traffic"
-  for needed in "$drive/camera.yaml" "$drive/image_02/0000000077.png" \
-    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
-    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
-  done
+  skip_unless_shared "$drive/camera.yaml" "$drive/image_02/0000000077.png" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"
   # The default, and twice the features on the road: before the prediction after a keyframe
   # was mended, the second made the frames that the map could not localise after one keyframe
   # each move 0.67 m while the car was stopping (16.5 m in all).
@@ -118,10 +122,8 @@ fi
 
 if [[ "$mode" == "slow" ]]; then
   slow="$shared/kitti/sequences/07"
-  for needed in "$slow/image_0/000159.png" "$shared/kitti/poses/07.txt" \
-    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"; do
-    [[ -f "$needed" ]] || { echo "$needed missing (set ROADSCALE_SHARED): skipped"; exit 77; }
-  done
+  skip_unless_shared "$slow/image_0/000159.png" "$shared/kitti/poses/07.txt" \
+    "$shared/models/espnetv2/espnetv2_s2.0_city_512x256.onnx"
   "$roadscale" run --kitti "$slow" --frames 0:160 --out "$out/run" >"$out/log.txt" 2>&1 ||
     fail "run failed: $(cat "$out/log.txt")"
   cat "$out/log.txt"

@@ -5,6 +5,10 @@
 namespace roadscale {
 namespace {
 
+int CountRoad(const SegmentationResult& result) {
+  return result.road_mask.empty() ? 0 : cv::countNonZero(result.road_mask);
+}
+
 cv::Mat StaticMaskOf(const cv::Mat& dynamic_mask) {
   if (dynamic_mask.empty()) return cv::Mat();
   cv::Mat out;
@@ -27,6 +31,7 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
     // The first frame waits for its own masks: nothing to carry them from.
     anchor_ = take_fresh(frame_index);
     anchor_frame_ = frame_index;
+    anchor_road_px_ = CountRoad(anchor_);
     road_ = anchor_.road_mask;
     dynamic_ = anchor_.dynamic_mask;
     FrontendMasks masks{anchor_.static_mask, anchor_.dynamic_mask};
@@ -56,6 +61,7 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
   if (due >= 0) {
     anchor_ = take_fresh(due);
     anchor_frame_ = due;
+    anchor_road_px_ = CountRoad(anchor_);
     cur_from_anchor_.setIdentity();
     for (const auto& [frame, cur_from_prev] : steps_) {
       if (frame > due) cur_from_anchor_ = cur_from_prev * cur_from_anchor_;
@@ -81,8 +87,7 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
 }
 
 void FrontendMaskCarrier::MeasureCarriedRoadShare() {
-  const int anchor_road_px = anchor_.road_mask.empty() ? 0 : cv::countNonZero(anchor_.road_mask);
-  if (anchor_road_px == 0 || road_.empty()) {
+  if (anchor_road_px_ == 0 || road_.empty()) {
     carried_road_share_ = 1.0;
     return;
   }
@@ -93,7 +98,7 @@ void FrontendMaskCarrier::MeasureCarriedRoadShare() {
   } else {
     cv::subtract(road_, dynamic_, free_road);
   }
-  carried_road_share_ = static_cast<double>(cv::countNonZero(free_road)) / anchor_road_px;
+  carried_road_share_ = static_cast<double>(cv::countNonZero(free_road)) / anchor_road_px_;
 }
 
 }  // namespace roadscale

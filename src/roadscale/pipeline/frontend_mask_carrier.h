@@ -52,6 +52,7 @@ class FrontendMaskCarrier {
   std::deque<int> pending_;  // segmented frames whose results are not yet due
   SegmentationResult anchor_;
   int anchor_frame_ = -1;
+  int anchor_road_px_ = 0;
   Eigen::Matrix3d cur_from_anchor_ = Eigen::Matrix3d::Identity();
   // (frame, its road homography from the frame before), back to the oldest pending frame.
   std::deque<std::pair<int, Eigen::Matrix3d>> steps_;
