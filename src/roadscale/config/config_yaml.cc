@@ -199,6 +199,7 @@ std::vector<Block> Blocks(RunConfig& c) {
         Scalar("road_alignment_max_distance", &a.alignment.max_distance),
         Scalar("road_alignment_tangent_to_travel", &a.alignment.tangent_to_travel),
         Scalar("road_alignment_max_pitch_to_travel", &a.alignment.max_pitch_to_travel_deg),
+        Scalar("road_alignment_shadow_brightness", &a.road_alignment_shadow_brightness),
         Scalar("road_alignment_region_distance", &a.road_region_max_distance),
         Scalar("road_alignment_region_half_width", &a.road_region_half_width),
         Scalar("localization_min_landmarks", &a.localization.min_landmarks),

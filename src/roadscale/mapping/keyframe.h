@@ -38,6 +38,9 @@ struct Keyframe {
   std::map<int64_t, Eigen::Vector2d> observations;
   cv::Mat road_mask;  // CV_8UC1, non-zero = road; empty without segmentation
   cv::Mat image;      // grey CV_8UC1, for the road alignment; may be empty
+  // The road less the moving objects' shadows on it (MovingObjectShadows), where the road
+  // alignment on the whole road found no plane; empty without a moving-object mask.
+  cv::Mat road_mask_without_shadows;
   std::optional<RoadPairPlane> road_pair;
   // Distance from the previous keyframe when this keyframe was created (map units): the
   // frames in between were localised at that scale, see KeyframeBackend.

@@ -9,6 +9,7 @@
 
 #include "roadscale/frontend/two_view_motion.h"
 #include "roadscale/mapping/road_height_gate.h"
+#include "roadscale/scale/moving_shadows.h"
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/scale/road_plane_ransac.h"
 #include "roadscale/util/error.h"
@@ -22,7 +23,8 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
 }
 
 Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
-                      double timestamp, const Rigid3d& cam_from_world) {
+                      const cv::Mat& dynamic_mask, double shadow_brightness, double timestamp,
+                      const Rigid3d& cam_from_world) {
   Keyframe keyframe;
   keyframe.frame_index = frontend.frame_index;
   keyframe.timestamp = timestamp;
@@ -32,6 +34,13 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, c
   }
   keyframe.road_mask = road_mask;
   keyframe.image = image;
+  if (shadow_brightness > 0.0 && !road_mask.empty() && !image.empty() && !dynamic_mask.empty()) {
+    const cv::Mat shadows = MovingObjectShadows(image, road_mask, dynamic_mask, shadow_brightness);
+    if (cv::countNonZero(shadows & road_mask) > 0) {
+      keyframe.road_mask_without_shadows = road_mask.clone();
+      keyframe.road_mask_without_shadows.setTo(0, shadows);
+    }
+  }
   return keyframe;
 }
 
@@ -60,6 +69,8 @@ void MappingOptions::Check() const {
   CheckOption(road_pool_pairs >= 1, "mapping.road_pool_pairs", "must be >= 1 (1: no pooling)");
   CheckOption(road_max_height_ratio > 1.0 && std::isfinite(road_max_height_ratio),
               "mapping.road_max_height_ratio", "must be a number > 1");
+  CheckOption(road_alignment_shadow_brightness >= 0.0 && road_alignment_shadow_brightness < 1.0,
+              "mapping.road_alignment_shadow_brightness", "must be in 0..1 (0: off)");
   CheckOption(std::isfinite(first_scale_max_speed) && first_scale_max_speed >= 0.0,
               "mapping.first_scale_max_speed", "must be >= 0 m/s (0: no limit)");
   keyframes.Check();
@@ -187,7 +198,7 @@ bool KeyframeBackend::BootstrapPose(const FrontendFrame& frontend, Rigid3d* cam_
 
 std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend,
                                                    const cv::Mat& road_mask, const cv::Mat& image,
-                                                   double timestamp) {
+                                                   double timestamp, const cv::Mat& dynamic_mask) {
   PendingFrame pending;
   MappedFrame& mapped = pending.mapped;
   mapped.frame_index = frontend.frame_index;
@@ -197,7 +208,9 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
   if (!has_frame_) {
     has_frame_ = true;
-    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, timestamp, Rigid3d::Identity()));
+    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, dynamic_mask,
+                                     options_.road_alignment_shadow_brightness, timestamp,
+                                     Rigid3d::Identity()));
     mapped.keyframe = true;
     mapped.keyframe_reason = "first";
     pending.keyframe_before = frontend.frame_index;
@@ -238,7 +251,7 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
     const int keyframe_before = last_keyframe.frame_index;
     const double arrival_baseline =
         (Centre(cam_from_world) - Centre(last_keyframe.cam_from_world)).norm();
-    AddKeyframe(frontend, road_mask, image, timestamp, cam_from_world, &mapped);
+    AddKeyframe(frontend, road_mask, image, dynamic_mask, timestamp, cam_from_world, &mapped);
     cam_from_world = window_.keyframes().back().cam_from_world;
     // The step's length is the one the frame arrived with, in the scale the adjustment gave
     // the keyframe interval. The adjusted keyframe against the previous frame's arrival pose
@@ -268,9 +281,12 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 }
 
 void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask,
-                                  const cv::Mat& image, double timestamp,
-                                  const Rigid3d& cam_from_world, MappedFrame* mapped) {
-  Keyframe keyframe = MakeKeyframe(frontend, road_mask, image, timestamp, cam_from_world);
+                                  const cv::Mat& image, const cv::Mat& dynamic_mask,
+                                  double timestamp, const Rigid3d& cam_from_world,
+                                  MappedFrame* mapped) {
+  Keyframe keyframe =
+      MakeKeyframe(frontend, road_mask, image, dynamic_mask,
+                   options_.road_alignment_shadow_brightness, timestamp, cam_from_world);
   keyframe.baseline_at_creation =
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
@@ -445,9 +461,20 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   const bool on_road_mask = !prev.road_mask.empty() && !cur.road_mask.empty();
   RoadPlaneAlignmentOptions alignment_options = options_.alignment;
   if (!on_road_mask) alignment_options.loss = RoadPlaneAlignmentOptions::Loss::kTukey;
-  const RoadPlaneAlignment alignment = AlignRoadPlaneOrSearchAll(
-      prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
-      expected_normal.value_or(Eigen::Vector3d::UnitY()), expected, alignment_options);
+  const Eigen::Vector3d normal_guess = expected_normal.value_or(Eigen::Vector3d::UnitY());
+  RoadPlaneAlignment alignment =
+      AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
+                                normal_guess, expected, alignment_options);
+  const bool without_shadows =
+      !prev.road_mask_without_shadows.empty() || !cur.road_mask_without_shadows.empty();
+  if (!alignment.ok && on_road_mask && without_shadows) {
+    const cv::Mat& prev_clear =
+        prev.road_mask_without_shadows.empty() ? prev.road_mask : prev.road_mask_without_shadows;
+    const cv::Mat& cur_clear =
+        cur.road_mask_without_shadows.empty() ? cur.road_mask : cur.road_mask_without_shadows;
+    alignment = AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_clear, cur_clear, camera_,
+                                          cur_from_prev, normal_guess, expected, alignment_options);
+  }
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
   cur.road_pair->on_road_mask = on_road_mask;

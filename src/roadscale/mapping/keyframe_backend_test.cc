@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "roadscale/testing/mapping_test_scene.h"
+#include "roadscale/util/error.h"
 
 namespace roadscale {
 namespace {
@@ -295,6 +296,16 @@ TEST(KeyframeBackend, TheFramePairAndTheLastStepOutvoteTheMapTogetherOnly) {
   for (int f = kOdd - 1; f <= kOdd + 1; ++f) {
     const Eigen::Vector3d truth = scene.cam_from_world[f].inverse().translation();
     EXPECT_LT((kept[f].world_from_cam.translation() - truth).norm(), 0.05) << f;
+  }
+}
+
+TEST(MappingOptions, TheShadowBrightnessIsAShareOfTheRoadsLight) {
+  MappingOptions options;
+  options.road_alignment_shadow_brightness = 0.0;  // off
+  EXPECT_NO_THROW(options.Check());
+  for (const double wrong : {-0.1, 1.0, std::nan("")}) {
+    options.road_alignment_shadow_brightness = wrong;
+    EXPECT_THROW(options.Check(), Error) << wrong;
   }
 }
 

@@ -54,6 +54,7 @@ class CarriedFrontend {
       return carrier_.Masks(index, correspondences, take);
     });
     out.road_step = carrier_.last_step();
+    out.tracked.dynamic_mask = carrier_.last_dynamic_mask();
     if (carry_in_place_) out.dynamic_mask = carrier_.last_dynamic_mask();
     const bool road_shrunk =
         !carrier_.segmentation_pending() && carrier_.carried_road_share() < min_carried_road_share_;
@@ -95,6 +96,7 @@ class RoadMaskCompleter {
       road_ = served.result.road_mask;
       cur_from_road_.setIdentity();
       SetRoadMask(road_, &tracked);
+      tracked.dynamic_mask = served.result.dynamic_mask;
     } else {
       cur_from_road_ = carried.road_step * cur_from_road_;
       cv::Mat road = CarryRoadMask(road_, cur_from_road_);

@@ -112,6 +112,7 @@ TrackedFrame SequentialPipeline::Track(const SegmentedFrame& input) {
   record.segmented = segmentation.fresh && segmentation.HasLabels();
   record.total_ms += segmentation.milliseconds;
   SetRoadMask(segmentation.road_mask, &tracked);
+  tracked.dynamic_mask = segmentation.dynamic_mask;
   return tracked;
 }
 
@@ -157,8 +158,8 @@ FrameRecord SequentialPipeline::Integrate(TrackedFrame tracked) {
   if (backend_) {
     records_waiting_for_backend_.push_back(record);
     const Clock::time_point backend_start = Clock::now();
-    const std::vector<MappedFrame> finished =
-        backend_->AddFrame(result, tracked.road_mask, tracked.image, record.timestamp);
+    const std::vector<MappedFrame> finished = backend_->AddFrame(
+        result, tracked.road_mask, tracked.image, record.timestamp, tracked.dynamic_mask);
     // The window holds at least two keyframes, so this frame is never among the finished.
     FrameRecord& waiting = records_waiting_for_backend_.back();
     waiting.scale_ms = MillisecondsSince(backend_start);

@@ -115,8 +115,9 @@ struct SegmentedFrame {
 struct TrackedFrame {
   FrameRecord record;  // the fields up to the frontend's filled in
   FrontendFrame frontend;
-  cv::Mat road_mask;  // this frame's road mask, for the next frame's scale query
-  cv::Mat image;      // this frame's grey image, for the keyframe back end's road alignment
+  cv::Mat road_mask;     // this frame's road mask, for the next frame's scale query
+  cv::Mat image;         // this frame's grey image, for the keyframe back end's road alignment
+  cv::Mat dynamic_mask;  // this frame's moving objects (empty: none), for the same
 };
 
 // Gives `tracked` its road mask (empty: none) and records its road pixels and the live

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "roadscale/scale/moving_shadows.h"
 #include "roadscale/segmentation/segmentation_masks.h"
 #include "roadscale/synth/synthetic_scene.h"
 #include "roadscale/util/error.h"
@@ -167,6 +168,47 @@ TEST(RoadPlaneAlignment, IgnoresACarAheadInTheRoadMaskWithTheBiweight) {
   EXPECT_NEAR(with_biweight.plane.height / clear_biweight.plane.height, 1.0, 0.005);
   EXPECT_GT(std::abs(with_huber.plane.height / clear_huber.plane.height - 1.0), 0.015);
   EXPECT_NEAR(with_biweight.plane.height / TrueHeightPerBaseline(pair), 1.0, 0.01);
+}
+
+TEST(RoadPlaneAlignment, MeasuresTheRoadWithoutTheShadowOfACarThatKeepsPace) {
+  RenderedPair pair = RenderPair("urban", 10, 12);
+  const RoadPlaneAlignment clear = Align(pair, 0.0);
+  // A car 10 m ahead that keeps pace with the camera, so that it and its sharp shadow (2 m of
+  // road toward the camera, at a third of the road's light, as on the real KITTI traffic
+  // drive) stand still in the image while the road moves under them.
+  const int centre = static_cast<int>(pair.camera.cx);
+  const int wheels = static_cast<int>(pair.camera.cy + pair.camera.fy * 1.65 / 10.0);
+  const int near = static_cast<int>(pair.camera.cy + pair.camera.fy * 1.65 / 8.0);
+  const cv::Rect car(centre - 65, wheels - 108, 130, 108);
+  const cv::Rect shadow(centre - 65, wheels, 130, near - wheels);
+  cv::Mat body(car.size(), CV_8UC1);
+  cv::RNG rng(7);
+  rng.fill(body, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(body, body, cv::Size(5, 5), 1.5);
+  cv::Mat dynamic = cv::Mat::zeros(pair.cur_image.size(), CV_8UC1);
+  dynamic(car).setTo(255);
+  for (cv::Mat* image : {&pair.prev_image, &pair.cur_image}) {
+    *image = image->clone();
+    body.copyTo((*image)(car));
+    (*image)(shadow).convertTo((*image)(shadow), -1, 0.35);
+  }
+  for (cv::Mat* road : {&pair.prev_road, &pair.cur_road}) {
+    *road = road->clone();
+    (*road)(car).setTo(0);
+  }
+  const RoadPlaneAlignment with_shadow = Align(pair, 0.0);
+
+  RenderedPair cleared = pair;
+  cleared.prev_road.setTo(0, MovingObjectShadows(pair.prev_image, pair.prev_road, dynamic, 0.6));
+  cleared.cur_road.setTo(0, MovingObjectShadows(pair.cur_image, pair.cur_road, dynamic, 0.6));
+  const RoadPlaneAlignment without_shadow = Align(cleared, 0.0);
+
+  ASSERT_TRUE(clear.ok && without_shadow.ok);
+  // Measured: with the shadow the alignment finds no plane (it stops at 2.1 times the true
+  // height); without it, 0.1 % from the truth (the road without car or shadow: 0.4 %).
+  EXPECT_TRUE(!with_shadow.ok ||
+              std::abs(with_shadow.plane.height / TrueHeightPerBaseline(pair) - 1.0) > 0.05);
+  EXPECT_NEAR(without_shadow.plane.height / TrueHeightPerBaseline(pair), 1.0, 0.01);
 }
 
 TEST(RoadPlaneAlignment, SamplesNoRoadBeyondItsLimits) {
