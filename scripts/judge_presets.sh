@@ -13,7 +13,10 @@
 #
 # A candidate default is judged with JUDGE_CONFIG (YAML blocks other than Segmentation, e.g.
 # 'Frontend: {road_max_per_cell: 8}') and JUDGE_SEGMENTATION (keys for the Segmentation block,
-# e.g. 'min_carried_road_share: 0.5'), both added to every run's configuration.
+# e.g. 'min_carried_road_share: 0.5'), both added to every run's configuration. JUDGE_SCENE adds
+# YAML blocks to the renders' scene, e.g. the real traffic drive's sunshine, in which each car
+# ahead casts a dark shadow that moves with it: 'Image: {ambient: 0.25, sun_elevation_deg: 35,
+# sun_azimuth_deg: 0}' (renders are kept in OUT: use a fresh OUT for another scene).
 #
 # Targets (issue 29): whole ratio within 1 % (3 % for traffic_jam), schedules within 1 % of each
 # other. Each row says PASS or FAIL against them; the last line counts the failures. The exit
@@ -21,7 +24,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if (($# < 4)); then
-  sed -n '2,16p' "$0" >&2
+  sed -n '2,19p' "$0" >&2
   exit 2
 fi
 out=$1 frames=$2 presets=$3 seeds=$4
@@ -30,8 +33,8 @@ roadscale=${ROADSCALE:-build/roadscale}
 mkdir -p "$out"
 # What the shared network does wrong on real frames, per docs/benchmarks.md ("A first scale at
 # 300 m/s"): outlines a few pixels small, a frame late, and now and then a car missed.
-printf 'Labels: {dynamic_erosion_px: 3, dynamic_lag_frames: 1, dynamic_dropout: 0.1}\n' \
-  >"$out/network_like.yaml"
+printf 'Labels: {dynamic_erosion_px: 3, dynamic_lag_frames: 1, dynamic_dropout: 0.1}\n%s\n' \
+  "${JUDGE_SCENE:-}" >"$out/network_like.yaml"
 for schedule in keyframes every_frame; do
   printf '%s\nSegmentation: {%sschedule: %s}\n' "${JUDGE_CONFIG:-}" \
     "${JUDGE_SEGMENTATION:+$JUDGE_SEGMENTATION, }" "$schedule" >"$out/schedule_$schedule.yaml"

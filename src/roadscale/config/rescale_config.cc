@@ -12,6 +12,7 @@ TrajectoryRescalerOptions RescalerOptionsFromConfig(const std::string& config_pa
   options.scale = config.scale;
   options.road_alignment = config.pipeline.mapping.road_alignment;
   options.alignment = config.pipeline.mapping.alignment;
+  options.alignment_shadow_brightness = config.pipeline.mapping.road_alignment_shadow_brightness;
   return options;
 }
 

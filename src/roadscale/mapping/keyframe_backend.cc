@@ -34,12 +34,9 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, c
   }
   keyframe.road_mask = road_mask;
   keyframe.image = image;
-  if (shadow_brightness > 0.0 && !road_mask.empty() && !image.empty() && !dynamic_mask.empty()) {
-    const cv::Mat shadows = MovingObjectShadows(image, road_mask, dynamic_mask, shadow_brightness);
-    if (cv::countNonZero(shadows & road_mask) > 0) {
-      keyframe.road_mask_without_shadows = road_mask.clone();
-      keyframe.road_mask_without_shadows.setTo(0, shadows);
-    }
+  if (shadow_brightness > 0.0) {
+    keyframe.road_mask_without_shadows =
+        RoadWithoutMovingShadows(image, road_mask, dynamic_mask, shadow_brightness);
   }
   return keyframe;
 }

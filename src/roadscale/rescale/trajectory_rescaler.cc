@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "roadscale/geometry/angles.h"
+#include "roadscale/scale/moving_shadows.h"
 #include "roadscale/scale/road_model_check.h"
 #include "roadscale/util/elapsed_time.h"
 #include "roadscale/util/error.h"
@@ -39,6 +40,8 @@ void TrajectoryRescalerOptions::Check() const {
   tracker.Check();
   refinement.Check();
   alignment.Check();
+  CheckOption(alignment_shadow_brightness >= 0.0 && alignment_shadow_brightness < 1.0,
+              "rescale.alignment_shadow_brightness", "must be in 0..1 (0: off)");
   CheckOption(std::isfinite(max_sampson_error_px) && max_sampson_error_px > 0.0,
               "rescale.max_sampson_error_px", "must be a positive number of pixels");
   CheckOption(
@@ -192,6 +195,8 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     tracker_.Track(static_cast<int>(position), frame.image, segmentation.dynamic_mask);
     tracker_.Detect(segmentation.static_mask, /*force=*/true);
     prev_road_mask_ = segmentation.road_mask.clone();
+    prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
+    prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
     prev_image_ = frame.image;
     prev_pose_frame_index_ = frame.index;
     prev_pose_timestamp_ = frame.timestamp;
@@ -225,8 +230,9 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     return finished;
   }
 
-  RescaledPose step = MeasureStep(next_pose_, frame.image, segmentation.road_mask,
-                                  frame.timestamp - prev_pose_timestamp_);
+  RescaledPose step =
+      MeasureStep(next_pose_, frame.image, segmentation.road_mask, segmentation.dynamic_mask,
+                  frame.timestamp - prev_pose_timestamp_);
   step.frame = frame.index;
   step.prev_frame = prev_pose_frame_index_;
   prev_pose_frame_index_ = frame.index;
@@ -241,6 +247,7 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   tracker_.Detect(segmentation.static_mask, kDetectEveryPose);
   step.detection_ms = tracker_.stats().detection_ms;
   prev_road_mask_ = segmentation.road_mask.clone();
+  prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
   prev_image_ = frame.image;
   step.total_ms = step_total_ms_ + segmentation_ms + read_ms + MillisecondsSince(start);
   step_tracking_ms_ = 0.0;
@@ -267,7 +274,8 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
 }
 
 double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_mask,
-                                     const Rigid3d& b_from_a, double external_length) const {
+                                     const cv::Mat& dynamic_mask, const Rigid3d& b_from_a,
+                                     double external_length) const {
   const double none = std::numeric_limits<double>::quiet_NaN();
   if (!options_.road_alignment || road_mask.empty() || prev_road_mask_.empty() ||
       prev_image_.empty() || image.channels() != 1) {
@@ -278,15 +286,30 @@ double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_m
       has_ratio_ ? ratio_ * external_length / options_.scale.camera_height : 0.0;
   const std::optional<Eigen::Vector3d> normal =
       ExpectedRoadNormal(b_from_a, options_.scale.road_model);
-  const RoadPlaneAlignment alignment =
+  const Eigen::Vector3d normal_guess = normal.value_or(Eigen::Vector3d::UnitY());
+  RoadPlaneAlignment alignment =
       AlignRoadPlane(prev_image_, image, prev_road_mask_, road_mask, camera_, b_from_a,
-                     normal.value_or(Eigen::Vector3d::UnitY()), expected, options_.alignment);
+                     normal_guess, expected, options_.alignment);
+  const double brightness = options_.alignment_shadow_brightness;
+  if (!alignment.ok && brightness > 0.0) {
+    // The whole road found no plane: once more without the moving objects' shadows.
+    const cv::Mat prev_clear =
+        RoadWithoutMovingShadows(prev_image_, prev_road_mask_, prev_dynamic_mask_, brightness);
+    const cv::Mat cur_clear = RoadWithoutMovingShadows(image, road_mask, dynamic_mask, brightness);
+    if (!prev_clear.empty() || !cur_clear.empty()) {
+      alignment =
+          AlignRoadPlane(prev_image_, image, prev_clear.empty() ? prev_road_mask_ : prev_clear,
+                         cur_clear.empty() ? road_mask : cur_clear, camera_, b_from_a, normal_guess,
+                         expected, options_.alignment);
+    }
+  }
   if (!alignment.ok) return none;
   return options_.scale.camera_height / (alignment.plane.height * external_length);
 }
 
 RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
-                                             const cv::Mat& road_mask, double seconds) {
+                                             const cv::Mat& road_mask, const cv::Mat& dynamic_mask,
+                                             double seconds) {
   const auto start = std::chrono::steady_clock::now();
   RescaledPose step;
   step.pose = pose;
@@ -366,8 +389,8 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
 
   step.estimate =
       estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), prev_road_mask_);
-  step.alignment_ratio =
-      AlignRoad(image, road_mask, MakeRigid3d(rotation, direction), step.external_length);
+  step.alignment_ratio = AlignRoad(image, road_mask, dynamic_mask, MakeRigid3d(rotation, direction),
+                                   step.external_length);
   if (step.estimate.status == ScaleStatus::kOk) {
     step.points_ratio = step.estimate.raw_scale / step.external_length;
   }

@@ -65,6 +65,10 @@ struct TrajectoryRescalerOptions {
   // that exists.
   bool road_alignment = true;
   RoadPlaneAlignmentOptions alignment;
+  // Where the alignment finds no plane on the whole road, it tries once more without the
+  // moving objects' shadows (the keyframe back end's Mapping.road_alignment_shadow_brightness;
+  // 0: no second try).
+  double alignment_shadow_brightness = 0.6;
   SampsonRefinementOptions refinement = [] {
     SampsonRefinementOptions options;
     options.loss = SampsonRefinementOptions::Loss::kCauchy;  // the tracks still hold outliers
@@ -201,13 +205,14 @@ class TrajectoryRescaler {
   bool has_ratio() const { return has_ratio_; }
 
  private:
-  // `image` and `road_mask`: frame b's grey image and road mask (empty: none).
-  // `seconds`: from the previous pose's frame to this one's (TrajectoryRescalerOptions::max_speed).
+  // `image`, `road_mask` and `dynamic_mask`: frame b's grey image, road and moving-object
+  // masks (empty: none). `seconds`: from the previous pose's frame to this one's
+  // (TrajectoryRescalerOptions::max_speed).
   RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask,
-                           double seconds);
+                           const cv::Mat& dynamic_mask, double seconds);
   // The step's |t| / h from the road's pixels (NaN when it does not converge).
-  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, const Rigid3d& b_from_a,
-                   double external_length) const;
+  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, const cv::Mat& dynamic_mask,
+                   const Rigid3d& b_from_a, double external_length) const;
   // Applies `ratio` to the step and chains its pose onto the last emitted one.
   RescaledPose Emit(RescaledPose step);
 
@@ -223,6 +228,7 @@ class TrajectoryRescaler {
   size_t next_frame_ = 0;
   size_t next_pose_ = 0;              // the pose whose frame comes next
   cv::Mat prev_road_mask_;            // road mask of the last pose's frame
+  cv::Mat prev_dynamic_mask_;         // and its moving-object mask
   cv::Mat prev_image_;                // grey image of the last pose's frame
   size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
   double prev_pose_timestamp_ = 0.0;  // ... and its timestamp

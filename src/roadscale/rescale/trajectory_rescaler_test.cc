@@ -437,6 +437,9 @@ TEST(TrajectoryRescalerOptions, RejectsInvalidValues) {
   options = TrajectoryRescalerOptions();
   options.scale.camera_height = -1.0;
   EXPECT_THROW(options.Check(), Error);
+  options = TrajectoryRescalerOptions();
+  options.alignment_shadow_brightness = 1.0;
+  EXPECT_THROW(options.Check(), Error);
 }
 
 }  // namespace

@@ -106,4 +106,15 @@ cv::Mat MovingObjectShadows(const cv::Mat& image, const cv::Mat& road_mask,
   return shadows;
 }
 
+cv::Mat RoadWithoutMovingShadows(const cv::Mat& image, const cv::Mat& road_mask,
+                                 const cv::Mat& dynamic_mask, double max_relative_brightness) {
+  if (image.empty() || road_mask.empty() || dynamic_mask.empty()) return cv::Mat();
+  const cv::Mat shadows =
+      MovingObjectShadows(image, road_mask, dynamic_mask, max_relative_brightness);
+  cv::Mat road = road_mask.clone();
+  road.setTo(0, shadows);
+  if (cv::countNonZero(road) == cv::countNonZero(road_mask)) return cv::Mat();
+  return road;
+}
+
 }  // namespace roadscale

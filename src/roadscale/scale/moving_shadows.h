@@ -21,4 +21,9 @@ namespace roadscale {
 cv::Mat MovingObjectShadows(const cv::Mat& image, const cv::Mat& road_mask,
                             const cv::Mat& dynamic_mask, double max_relative_brightness);
 
+// `road_mask` less MovingObjectShadows, or an empty Mat where that takes no road pixel (or a
+// mask or the image is empty): the road alignment's second try, only where it differs.
+cv::Mat RoadWithoutMovingShadows(const cv::Mat& image, const cv::Mat& road_mask,
+                                 const cv::Mat& dynamic_mask, double max_relative_brightness);
+
 }  // namespace roadscale

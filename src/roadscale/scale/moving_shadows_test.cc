@@ -74,6 +74,17 @@ TEST(MovingObjectShadows, TakesAColourImageAsItsGrey) {
   EXPECT_EQ(cv::countNonZero(grey_result != colour_result), 0);
 }
 
+TEST(RoadWithoutMovingShadows, IsTheRoadLessTheShadowsOrEmptyWhereNoneIsTaken) {
+  const Street street;
+  const cv::Mat road = RoadWithoutMovingShadows(street.image, street.road, street.car, 0.6);
+  ASSERT_FALSE(road.empty());
+  EXPECT_EQ(CountIn(road, street.car_shadow), 0);
+  EXPECT_EQ(CountIn(road, street.tree_shadow), street.tree_shadow.area());
+  const cv::Mat none = cv::Mat::zeros(street.image.size(), CV_8UC1);
+  EXPECT_TRUE(RoadWithoutMovingShadows(street.image, street.road, none, 0.6).empty());
+  EXPECT_TRUE(RoadWithoutMovingShadows(street.image, street.road, cv::Mat(), 0.6).empty());
+}
+
 TEST(MovingObjectShadows, RefusesMasksOfAnotherSize) {
   const Street street;
   const cv::Mat small = cv::Mat::zeros(10, 10, CV_8UC1);
