@@ -23,7 +23,7 @@ Eigen::Vector3d Centre(const Rigid3d& cam_from_world) {
 }
 
 Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, const cv::Mat& image,
-                      const cv::Mat& dynamic_mask, double shadow_brightness, double timestamp,
+                      const cv::Mat& dynamic_mask, double timestamp,
                       const Rigid3d& cam_from_world) {
   Keyframe keyframe;
   keyframe.frame_index = frontend.frame_index;
@@ -34,10 +34,7 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, c
   }
   keyframe.road_mask = road_mask;
   keyframe.image = image;
-  if (shadow_brightness > 0.0) {
-    keyframe.road_mask_without_shadows =
-        RoadWithoutMovingShadows(image, road_mask, dynamic_mask, shadow_brightness);
-  }
+  keyframe.dynamic_mask = dynamic_mask;
   return keyframe;
 }
 
@@ -205,9 +202,8 @@ std::vector<MappedFrame> KeyframeBackend::AddFrame(const FrontendFrame& frontend
 
   if (!has_frame_) {
     has_frame_ = true;
-    window_.AddKeyframe(MakeKeyframe(frontend, road_mask, image, dynamic_mask,
-                                     options_.road_alignment_shadow_brightness, timestamp,
-                                     Rigid3d::Identity()));
+    window_.AddKeyframe(
+        MakeKeyframe(frontend, road_mask, image, dynamic_mask, timestamp, Rigid3d::Identity()));
     mapped.keyframe = true;
     mapped.keyframe_reason = "first";
     pending.keyframe_before = frontend.frame_index;
@@ -282,8 +278,7 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
                                   double timestamp, const Rigid3d& cam_from_world,
                                   MappedFrame* mapped) {
   Keyframe keyframe =
-      MakeKeyframe(frontend, road_mask, image, dynamic_mask,
-                   options_.road_alignment_shadow_brightness, timestamp, cam_from_world);
+      MakeKeyframe(frontend, road_mask, image, dynamic_mask, timestamp, cam_from_world);
   keyframe.baseline_at_creation =
       (Centre(cam_from_world) - Centre(window_.keyframes().back().cam_from_world)).norm();
   window_.AddKeyframe(std::move(keyframe));
@@ -435,7 +430,7 @@ std::vector<double> KeyframeBackend::RoadLandmarkHeights() const {
 void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   std::deque<Keyframe>& keyframes = window_.keyframes();
   if (keyframes.size() < 2) return;
-  const Keyframe& prev = keyframes[keyframes.size() - 2];
+  Keyframe& prev = keyframes[keyframes.size() - 2];
   Keyframe& cur = keyframes.back();
   // Without segmentation the road is looked for where it lies ahead of a car on a lane.
   const cv::Mat& prev_mask = prev.road_mask.empty() ? road_region_ : prev.road_mask;
@@ -462,20 +457,29 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   RoadPlaneAlignment alignment =
       AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
                                 normal_guess, expected, alignment_options);
-  const bool without_shadows =
-      !prev.road_mask_without_shadows.empty() || !cur.road_mask_without_shadows.empty();
-  if (!alignment.ok && on_road_mask && without_shadows) {
-    const cv::Mat& prev_clear =
-        prev.road_mask_without_shadows.empty() ? prev.road_mask : prev.road_mask_without_shadows;
-    const cv::Mat& cur_clear =
-        cur.road_mask_without_shadows.empty() ? cur.road_mask : cur.road_mask_without_shadows;
-    alignment = AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_clear, cur_clear, camera_,
-                                          cur_from_prev, normal_guess, expected, alignment_options);
+  if (!alignment.ok && on_road_mask && options_.road_alignment_shadow_brightness > 0.0) {
+    const cv::Mat& prev_clear = RoadWithoutShadows(&prev);
+    const cv::Mat& cur_clear = RoadWithoutShadows(&cur);
+    if (&prev_clear != &prev.road_mask || &cur_clear != &cur.road_mask) {
+      alignment =
+          AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_clear, cur_clear, camera_,
+                                    cur_from_prev, normal_guess, expected, alignment_options);
+    }
   }
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
   cur.road_pair->on_road_mask = on_road_mask;
   mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);
+}
+
+const cv::Mat& KeyframeBackend::RoadWithoutShadows(Keyframe* keyframe) const {
+  if (!keyframe->road_mask_without_shadows) {
+    keyframe->road_mask_without_shadows =
+        RoadWithoutMovingShadows(keyframe->image, keyframe->road_mask, keyframe->dynamic_mask,
+                                 options_.road_alignment_shadow_brightness);
+  }
+  return keyframe->road_mask_without_shadows->empty() ? keyframe->road_mask
+                                                      : *keyframe->road_mask_without_shadows;
 }
 
 std::vector<double> KeyframeBackend::RoadPairHeights() const {
