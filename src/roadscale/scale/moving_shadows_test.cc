@@ -51,6 +51,20 @@ TEST(MovingObjectShadows, TakesTheDarkRoadThatTouchesACarAndLeavesAStaticShadow)
   EXPECT_LT(CountIn(shadows, cv::Rect(0, 60, 200, 60)), street.car_shadow.area() + 400);
 }
 
+TEST(MovingObjectShadows, LeavesADarkRegionThatTouchesACarButIsLargerOrBesideIt) {
+  // A building's shadow across the whole road below the car: it touches the car, but it is
+  // larger than the car in the image.
+  Street across;
+  across.image(cv::Rect(0, 80, 200, 40)).setTo(50);
+  EXPECT_EQ(cv::countNonZero(MovingObjectShadows(across.image, across.road, across.car, 0.6)), 0);
+  // A shadow as small as the car's, touching its side, but centred beside it.
+  Street beside;
+  const cv::Rect side(120, 60, 40, 20);
+  beside.image(side).setTo(50);
+  beside.image(beside.car_shadow).setTo(140);
+  EXPECT_EQ(cv::countNonZero(MovingObjectShadows(beside.image, beside.road, beside.car, 0.6)), 0);
+}
+
 TEST(MovingObjectShadows, ALowerThresholdKeepsAShadowThatIsNotDarkEnough) {
   const Street street;
   // The shadow is 50 / ~144 = 0.35 of the road.
