@@ -97,7 +97,12 @@ centres = [[float(v) for v in line.split()[3::4]] for line in open(sys.argv[2])]
 steps = [math.dist(a, b) for a, b in zip(centres, centres[1:])]
 assert max(steps) < 0.5, f"a step of {max(steps):.2f} m in a creep (frame {steps.index(max(steps)) + 1})"
 assert max(steps[-18:]) < 0.02, f"the stopped car moves: {steps[-18:]}"
-assert 6.0 < sum(steps) < 12.0, f"path of {sum(steps):.2f} m (measured 8.7-9.2 m)"
+# A car's speed changes by less than 1 m/s in a tenth of a second (1 g). Before the ground
+# under a stopping pair kept its normal (SteadyRoadNormal) a keyframe stepped 0.38 m between
+# steps of 0.11 and 0.13 m: the map had lost the landmarks the frames before it saw.
+jumps = [abs(b - a) for a, b in zip(steps, steps[1:])]
+assert max(jumps) < 0.1, f"the speed jumps by {max(jumps):.2f} m a frame (frame {jumps.index(max(jumps)) + 2})"
+assert 6.0 < sum(steps) < 12.0, f"path of {sum(steps):.2f} m (measured 8.5-8.9 m)"
 # The shadows of the cars ahead move with them: on the whole road the alignment found a plane
 # on 0 of 13 keyframe pairs, without the shadows on 6 of 15 (9 of 13 with road cap 8).
 keyframes = [r for r in rows if r["keyframe"] == "1"]

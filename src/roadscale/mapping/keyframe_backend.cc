@@ -131,7 +131,8 @@ KeyframeBackend::KeyframeBackend(const PinholeCamera& camera, double camera_heig
       max_frames_before_scale_(max_frames_before_scale),
       selection_(camera,
                  SelectionOptions(selection, camera_height, options.road_min_points_per_pair)),
-      motion_options_(motion) {
+      motion_options_(motion),
+      ground_normal_(selection_.options().road_model.max_angle_deg) {
   camera_.Check();
   options_.Check();
   if (options_.road_region_max_distance > 0.0) {
@@ -304,7 +305,7 @@ void KeyframeBackend::AddKeyframe(const FrontendFrame& frontend, const cv::Mat& 
   }
 }
 
-std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
+std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() {
   const std::deque<Keyframe>& keyframes = window_.keyframes();
   if (!scaled_ || keyframes.size() < 2) return std::nullopt;
   const Rigid3d cur_from_prev =
@@ -317,7 +318,7 @@ std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() const {
   // the model's own error (the camera's pitch against the road, the crown) is larger than the
   // two frames' difference, a median 0.1 degree. Rotated into the newest frame it scored no
   // better (docs/benchmarks.md, "A review of the back end").
-  return Plane{*normal, camera_height_};
+  return Plane{ground_normal_.Next(*normal), camera_height_};
 }
 
 int KeyframeBackend::MarkRoadLandmarks(MappedFrame* mapped) {

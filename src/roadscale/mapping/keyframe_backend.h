@@ -15,6 +15,7 @@
 #include "roadscale/mapping/landmark_triangulator.h"
 #include "roadscale/mapping/local_bundle_adjuster.h"
 #include "roadscale/mapping/local_window.h"
+#include "roadscale/mapping/steady_road_normal.h"
 #include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
 
@@ -223,8 +224,10 @@ class KeyframeBackend {
   // Marks the landmarks the paper's selection finds on the road between the last two
   // keyframes; returns how many.
   int MarkRoadLandmarks(MappedFrame* mapped);
-  // The road plane under the newest keyframe once the map is metric, else nothing.
-  std::optional<Plane> GroundUnderNewestKeyframe() const;
+  // The road plane under the newest keyframe once the map is metric, else nothing. Its normal
+  // is the last pair's (perpendicular to the travel) where that is steady (SteadyRoadNormal,
+  // with the road model's angle as the largest turn between keyframes).
+  std::optional<Plane> GroundUnderNewestKeyframe();
   // The pooled fallback of MarkRoadLandmarks (MappingOptions::road_pool_pairs).
   int MarkPooledRoadLandmarks(const Keyframe& anchor, const Rigid3d& cur_from_prev,
                               MappedFrame* mapped);
@@ -249,6 +252,7 @@ class KeyframeBackend {
   int max_frames_before_scale_;
   ScaleEstimator selection_;
   TwoViewMotionOptions motion_options_;
+  SteadyRoadNormal ground_normal_;  // of GroundUnderNewestKeyframe
   LocalWindow window_;
   cv::Mat road_region_;  // RoadRegionAhead, or empty when off
   std::deque<PendingFrame> pending_;
