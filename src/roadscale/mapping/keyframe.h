@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "roadscale/geometry/rigid3.h"
+#include "roadscale/scale/moving_shadows.h"
 
 #include <Eigen/Core>
 
@@ -36,12 +37,10 @@ struct Keyframe {
   // Track id -> pixel of every track seen in this frame. Observations the bundle adjuster
   // rejects are erased.
   std::map<int64_t, Eigen::Vector2d> observations;
-  cv::Mat road_mask;     // CV_8UC1, non-zero = road; empty without segmentation
-  cv::Mat image;         // grey CV_8UC1, for the road alignment; may be empty
-  cv::Mat dynamic_mask;  // CV_8UC1, non-zero = a moving object; empty: none known
-  // The road less the moving objects' shadows on it (RoadWithoutMovingShadows), worked out
-  // once the road alignment on the whole road found no plane; an empty Mat: none there.
-  std::optional<cv::Mat> road_mask_without_shadows;
+  cv::Mat road_mask;  // CV_8UC1, non-zero = road; empty without segmentation
+  cv::Mat image;      // grey CV_8UC1, for the road alignment; may be empty
+  // The road less the shadows of the moving objects on it, for the road alignment's second try.
+  ShadowFreeRoad shadow_free_road;
   std::optional<RoadPairPlane> road_pair;
   // Distance from the previous keyframe when this keyframe was created (map units): the
   // frames in between were localised at that scale, see KeyframeBackend.

@@ -34,7 +34,7 @@ Keyframe MakeKeyframe(const FrontendFrame& frontend, const cv::Mat& road_mask, c
   }
   keyframe.road_mask = road_mask;
   keyframe.image = image;
-  keyframe.dynamic_mask = dynamic_mask;
+  keyframe.shadow_free_road = ShadowFreeRoad(image, road_mask, dynamic_mask);
   return keyframe;
 }
 
@@ -458,29 +458,21 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
   RoadPlaneAlignment alignment =
       AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_mask, cur_mask, camera_, cur_from_prev,
                                 normal_guess, expected, alignment_options);
-  if (!alignment.ok && on_road_mask && options_.road_alignment_shadow_brightness > 0.0) {
-    const cv::Mat& prev_clear = RoadWithoutShadows(&prev);
-    const cv::Mat& cur_clear = RoadWithoutShadows(&cur);
-    if (&prev_clear != &prev.road_mask || &cur_clear != &cur.road_mask) {
-      alignment =
-          AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_clear, cur_clear, camera_,
-                                    cur_from_prev, normal_guess, expected, alignment_options);
+  const double shadow_brightness = options_.road_alignment_shadow_brightness;
+  if (!alignment.ok && on_road_mask && shadow_brightness > 0.0) {
+    const cv::Mat* prev_clear = prev.shadow_free_road.Get(shadow_brightness);
+    const cv::Mat* cur_clear = cur.shadow_free_road.Get(shadow_brightness);
+    if (prev_clear != nullptr || cur_clear != nullptr) {
+      alignment = AlignRoadPlaneOrSearchAll(
+          prev.image, cur.image, prev_clear != nullptr ? *prev_clear : prev.road_mask,
+          cur_clear != nullptr ? *cur_clear : cur.road_mask, camera_, cur_from_prev, normal_guess,
+          expected, alignment_options);
     }
   }
   if (!alignment.ok) return;
   cur.road_pair = RoadPairPlane{prev.frame_index, alignment.plane.height};
   cur.road_pair->on_road_mask = on_road_mask;
   mapped->alignment_scale = camera_height_ / (alignment.plane.height * baseline);
-}
-
-const cv::Mat& KeyframeBackend::RoadWithoutShadows(Keyframe* keyframe) const {
-  if (!keyframe->road_mask_without_shadows) {
-    keyframe->road_mask_without_shadows =
-        RoadWithoutMovingShadows(keyframe->image, keyframe->road_mask, keyframe->dynamic_mask,
-                                 options_.road_alignment_shadow_brightness);
-  }
-  return keyframe->road_mask_without_shadows->empty() ? keyframe->road_mask
-                                                      : *keyframe->road_mask_without_shadows;
 }
 
 std::vector<double> KeyframeBackend::RoadPairHeights() const {

@@ -218,9 +218,6 @@ class KeyframeBackend {
   // Measures the road plane between the last two keyframes on their road pixels and keeps it
   // on the newer one (Keyframe::road_pair) when the alignment converged.
   void AlignRoadPair(MappedFrame* mapped);
-  // The keyframe's road less its moving objects' shadows (worked out on first use), or its
-  // road mask where that takes no pixel: the alignment's second try.
-  const cv::Mat& RoadWithoutShadows(Keyframe* keyframe) const;
   // Marks the landmarks the paper's selection finds on the road between the last two
   // keyframes; returns how many.
   int MarkRoadLandmarks(MappedFrame* mapped);

@@ -195,9 +195,9 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     tracker_.Track(static_cast<int>(position), frame.image, segmentation.dynamic_mask);
     tracker_.Detect(segmentation.static_mask, /*force=*/true);
     prev_road_mask_ = segmentation.road_mask.clone();
-    prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
-    prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
     prev_image_ = frame.image;
+    prev_shadow_free_road_ =
+        ShadowFreeRoad(prev_image_, prev_road_mask_, segmentation.dynamic_mask.clone());
     prev_pose_frame_index_ = frame.index;
     prev_pose_timestamp_ = frame.timestamp;
     RescaledPose first;
@@ -230,9 +230,10 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     return finished;
   }
 
-  RescaledPose step =
-      MeasureStep(next_pose_, frame.image, segmentation.road_mask, segmentation.dynamic_mask,
-                  frame.timestamp - prev_pose_timestamp_);
+  const cv::Mat road_mask = segmentation.road_mask.clone();
+  ShadowFreeRoad shadow_free_road(frame.image, road_mask, segmentation.dynamic_mask.clone());
+  RescaledPose step = MeasureStep(next_pose_, frame.image, road_mask, &shadow_free_road,
+                                  frame.timestamp - prev_pose_timestamp_);
   step.frame = frame.index;
   step.prev_frame = prev_pose_frame_index_;
   prev_pose_frame_index_ = frame.index;
@@ -246,9 +247,9 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   constexpr bool kDetectEveryPose = true;
   tracker_.Detect(segmentation.static_mask, kDetectEveryPose);
   step.detection_ms = tracker_.stats().detection_ms;
-  prev_road_mask_ = segmentation.road_mask.clone();
-  prev_dynamic_mask_ = segmentation.dynamic_mask.clone();
+  prev_road_mask_ = road_mask;
   prev_image_ = frame.image;
+  prev_shadow_free_road_ = std::move(shadow_free_road);
   step.total_ms = step_total_ms_ + segmentation_ms + read_ms + MillisecondsSince(start);
   step_tracking_ms_ = 0.0;
   step_total_ms_ = 0.0;
@@ -274,8 +275,8 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
 }
 
 double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_mask,
-                                     const cv::Mat& dynamic_mask, const Rigid3d& b_from_a,
-                                     double external_length) const {
+                                     ShadowFreeRoad* shadow_free_road, const Rigid3d& b_from_a,
+                                     double external_length) {
   const double none = std::numeric_limits<double>::quiet_NaN();
   if (!options_.road_alignment || road_mask.empty() || prev_road_mask_.empty() ||
       prev_image_.empty() || image.channels() != 1) {
@@ -293,14 +294,13 @@ double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_m
   const double brightness = options_.alignment_shadow_brightness;
   if (!alignment.ok && brightness > 0.0) {
     // The whole road found no plane: once more without the moving objects' shadows.
-    const cv::Mat prev_clear =
-        RoadWithoutMovingShadows(prev_image_, prev_road_mask_, prev_dynamic_mask_, brightness);
-    const cv::Mat cur_clear = RoadWithoutMovingShadows(image, road_mask, dynamic_mask, brightness);
-    if (!prev_clear.empty() || !cur_clear.empty()) {
+    const cv::Mat* prev_clear = prev_shadow_free_road_.Get(brightness);
+    const cv::Mat* cur_clear = shadow_free_road->Get(brightness);
+    if (prev_clear != nullptr || cur_clear != nullptr) {
       alignment =
-          AlignRoadPlane(prev_image_, image, prev_clear.empty() ? prev_road_mask_ : prev_clear,
-                         cur_clear.empty() ? road_mask : cur_clear, camera_, b_from_a, normal_guess,
-                         expected, options_.alignment);
+          AlignRoadPlane(prev_image_, image, prev_clear != nullptr ? *prev_clear : prev_road_mask_,
+                         cur_clear != nullptr ? *cur_clear : road_mask, camera_, b_from_a,
+                         normal_guess, expected, options_.alignment);
     }
   }
   if (!alignment.ok) return none;
@@ -308,8 +308,8 @@ double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_m
 }
 
 RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
-                                             const cv::Mat& road_mask, const cv::Mat& dynamic_mask,
-                                             double seconds) {
+                                             const cv::Mat& road_mask,
+                                             ShadowFreeRoad* shadow_free_road, double seconds) {
   const auto start = std::chrono::steady_clock::now();
   RescaledPose step;
   step.pose = pose;
@@ -389,8 +389,8 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
 
   step.estimate =
       estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), prev_road_mask_);
-  step.alignment_ratio = AlignRoad(image, road_mask, dynamic_mask, MakeRigid3d(rotation, direction),
-                                   step.external_length);
+  step.alignment_ratio = AlignRoad(image, road_mask, shadow_free_road,
+                                   MakeRigid3d(rotation, direction), step.external_length);
   if (step.estimate.status == ScaleStatus::kOk) {
     step.points_ratio = step.estimate.raw_scale / step.external_length;
   }

@@ -16,6 +16,7 @@
 #include "roadscale/geometry/rigid3.h"
 #include "roadscale/io/frame_source.h"
 #include "roadscale/io/trajectory_io.h"
+#include "roadscale/scale/moving_shadows.h"
 #include "roadscale/scale/road_plane_alignment.h"
 #include "roadscale/scale/scale_estimator.h"
 #include "roadscale/scale/scale_filter.h"
@@ -205,14 +206,14 @@ class TrajectoryRescaler {
   bool has_ratio() const { return has_ratio_; }
 
  private:
-  // `image`, `road_mask` and `dynamic_mask`: frame b's grey image, road and moving-object
-  // masks (empty: none). `seconds`: from the previous pose's frame to this one's
-  // (TrajectoryRescalerOptions::max_speed).
+  // `image`, `road_mask`: frame b's grey image and road mask (empty: none);
+  // `shadow_free_road`: its road less its moving objects' shadows. `seconds`: from the
+  // previous pose's frame to this one's (TrajectoryRescalerOptions::max_speed).
   RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask,
-                           const cv::Mat& dynamic_mask, double seconds);
+                           ShadowFreeRoad* shadow_free_road, double seconds);
   // The step's |t| / h from the road's pixels (NaN when it does not converge).
-  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, const cv::Mat& dynamic_mask,
-                   const Rigid3d& b_from_a, double external_length) const;
+  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, ShadowFreeRoad* shadow_free_road,
+                   const Rigid3d& b_from_a, double external_length);
   // Applies `ratio` to the step and chains its pose onto the last emitted one.
   RescaledPose Emit(RescaledPose step);
 
@@ -226,12 +227,12 @@ class TrajectoryRescaler {
   double reference_step_length_ = 0.0;  // median non-zero VO step length
 
   size_t next_frame_ = 0;
-  size_t next_pose_ = 0;              // the pose whose frame comes next
-  cv::Mat prev_road_mask_;            // road mask of the last pose's frame
-  cv::Mat prev_dynamic_mask_;         // and its moving-object mask
-  cv::Mat prev_image_;                // grey image of the last pose's frame
-  size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
-  double prev_pose_timestamp_ = 0.0;  // ... and its timestamp
+  size_t next_pose_ = 0;                  // the pose whose frame comes next
+  cv::Mat prev_road_mask_;                // road mask of the last pose's frame
+  cv::Mat prev_image_;                    // grey image of the last pose's frame
+  ShadowFreeRoad prev_shadow_free_road_;  // ... and its road less its moving objects' shadows
+  size_t prev_pose_frame_index_ = 0;      // Frame::index of the last pose's frame
+  double prev_pose_timestamp_ = 0.0;      // ... and its timestamp
   bool has_ratio_ = false;
   double ratio_ = 0.0;                // the last filtered ratio
   std::deque<RescaledPose> pending_;  // steps waiting for the first ratio

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include <opencv2/core.hpp>
 
 namespace roadscale {
@@ -25,5 +27,25 @@ cv::Mat MovingObjectShadows(const cv::Mat& image, const cv::Mat& road_mask,
 // mask or the image is empty): the road alignment's second try, only where it differs.
 cv::Mat RoadWithoutMovingShadows(const cv::Mat& image, const cv::Mat& road_mask,
                                  const cv::Mat& dynamic_mask, double max_relative_brightness);
+
+// A frame's road mask less its moving objects' shadows, worked out on first use and kept:
+// the road alignment's second try may need the same frame with the frame before it and again
+// with the one after.
+class ShadowFreeRoad {
+ public:
+  ShadowFreeRoad() = default;
+  // Keeps the Mats' headers (the pixels are shared, not copied): they must not change after.
+  ShadowFreeRoad(const cv::Mat& image, const cv::Mat& road_mask, const cv::Mat& dynamic_mask);
+
+  // RoadWithoutMovingShadows at `max_relative_brightness` (the same on every call), or
+  // nullptr where that takes no road pixel.
+  const cv::Mat* Get(double max_relative_brightness);
+
+ private:
+  cv::Mat image_;
+  cv::Mat road_mask_;
+  cv::Mat dynamic_mask_;
+  std::optional<cv::Mat> without_shadows_;  // empty Mat: no shadow on the road
+};
 
 }  // namespace roadscale

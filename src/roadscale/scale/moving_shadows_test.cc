@@ -99,6 +99,20 @@ TEST(RoadWithoutMovingShadows, IsTheRoadLessTheShadowsOrEmptyWhereNoneIsTaken) {
   EXPECT_TRUE(RoadWithoutMovingShadows(street.image, street.road, cv::Mat(), 0.6).empty());
 }
 
+TEST(ShadowFreeRoad, WorksTheRoadOutOnceAndGivesNothingWhereNoShadowIsTaken) {
+  const Street street;
+  ShadowFreeRoad with_car(street.image, street.road, street.car);
+  const cv::Mat* road = with_car.Get(0.6);
+  ASSERT_NE(road, nullptr);
+  EXPECT_EQ(cv::countNonZero(*road !=
+                             RoadWithoutMovingShadows(street.image, street.road, street.car, 0.6)),
+            0);
+  EXPECT_EQ(with_car.Get(0.6), road);  // the same Mat, not worked out again
+  ShadowFreeRoad without_car(street.image, street.road, cv::Mat());
+  EXPECT_EQ(without_car.Get(0.6), nullptr);
+  EXPECT_EQ(ShadowFreeRoad().Get(0.6), nullptr);
+}
+
 TEST(MovingObjectShadows, RefusesMasksOfAnotherSize) {
   const Street street;
   const cv::Mat small = cv::Mat::zeros(10, 10, CV_8UC1);
