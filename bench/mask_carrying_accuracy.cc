@@ -1,5 +1,5 @@
 // How well masks carried between segmented frames match fresh network masks, on the grey
-// KITTI 00 frames (docs/benchmarks.md, "Segmenting keyframes only").
+// KITTI 00 frames (docs/benchmark-history.md, "Segmenting keyframes only").
 //
 //   build/bench/roadscale_mask_carrying_accuracy [--frames 200] [--size 512x256]
 //

@@ -25,7 +25,7 @@
 // "semantic" configuration, the KLT error of the road tracks against the true flow (from the
 // rendered depth and the true motion), their triangulated against their rendered depth, and
 // the fitted plane against the true plane and against the plane through the true positions
-// of the same inliers (docs/benchmarks.md, "Bias analysis").
+// of the same inliers (docs/benchmark-history.md, "Bias analysis").
 // --segmentation-model YAML (e.g. config/models/espnetv2_512x256.yaml, from the repository
 // root) segments each previous frame and uses the network's road mask as the "semantic" mask
 // when the sequence has no semantic/ folder.

@@ -6,7 +6,7 @@
 // OpenCV's CPU backend; the thread count is the second argument (2 is the default of
 // OnnxSegmenter::Options). "Time" is wall-clock time per frame; "CPU" is the CPU time of the
 // whole process (all DNN threads) per frame, which other programs sharing the cores disturb
-// less. Results are in docs/benchmarks.md, "Segmentation".
+// less. Results are in docs/benchmark-history.md, "Segmentation".
 #include <filesystem>
 #include <string>
 

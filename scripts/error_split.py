@@ -14,7 +14,7 @@ trajectories and evaluates all three with `roadscale eval`:
 A run whose t_err comes back mostly in the second is limited by its scale (the road's
 readings, the map carrying them), one whose t_err comes back mostly in the first by its
 rotation. On the rendered hills the length held all of it before the keyframe back end let
-consistent road pairs outvote the map (docs/benchmarks.md, "The pairs outvote the map").
+consistent road pairs outvote the map (docs/benchmark-history.md, "The pairs outvote the map").
 """
 import argparse
 import json

@@ -31,7 +31,7 @@ out=$1 frames=$2 presets=$3 seeds=$4
 shift 4
 roadscale=${ROADSCALE:-build/roadscale}
 mkdir -p "$out"
-# What the shared network does wrong on real frames, per docs/benchmarks.md ("A first scale at
+# What the shared network does wrong on real frames, per docs/benchmark-history.md ("A first scale at
 # 300 m/s"): outlines a few pixels small, a frame late, and now and then a car missed.
 printf 'Labels: {dynamic_erosion_px: 3, dynamic_lag_frames: 1, dynamic_dropout: 0.1}\n%s\n' \
   "${JUDGE_SCENE:-}" >"$out/network_like.yaml"

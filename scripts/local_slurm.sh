@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A single-node Slurm cluster on this machine, every file of it under one folder: for the live
 # test of `roadscale batch --slurm` (tests/batch_slurm_test.sh) and its benchmark
-# (docs/benchmarks.md, "Batch"). Needs root and Debian's slurm-wlm and munge.
+# (docs/benchmark-history.md, "Batch"). Needs root and Debian's slurm-wlm and munge.
 #
 #   scripts/local_slurm.sh start DIR   # munged, slurmctld, slurmd; waits until the node is idle
 #   export SLURM_CONF=DIR/slurm.conf   # then sbatch, squeue, sinfo talk to it

@@ -8,7 +8,7 @@ mean yaw per frame (the rotation about the camera's vertical axis, degrees) of t
 truth and of the estimate and their ratio, then the whole drive's accumulated yaw. A ratio
 below 1 in every curve is a rotation that is under-measured, not noise: on the rendered
 highways it was 0.65-0.75 before the keyframe back end's ground check
-(docs/benchmarks.md, "Tracks that caught the next post").
+(docs/benchmark-history.md, "Tracks that caught the next post").
 """
 import argparse
 import math

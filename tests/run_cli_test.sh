@@ -66,7 +66,7 @@ if [[ "$mode" == "full" ]]; then
   cat "$out/log.txt"
   expect_line "$out/log.txt" "^Segmentation: onnx espnetv2_s2.0_city_512x256.onnx"
   expect_line "$out/log.txt" "^Mapping: keyframe"
-  # Measured (docs/benchmarks.md, "Segmenting keyframes only"): t_err 1.12 %, ATE se3 0.33 m,
+  # Measured (docs/benchmark-history.md, "Segmenting keyframes only"): t_err 1.12 %, ATE se3 0.33 m,
   # length ratio 0.987 (network on keyframes, the default); on every frame 1.24 %, 0.52 m,
   # 0.987; the frame-to-frame host 1.31 %, 0.62 m, 0.991. Changes that carry no information
   # move t_err on these 200 frames between 1.2 and 1.7 % (same section).
@@ -83,8 +83,8 @@ PY
 fi
 
 # The car creeps behind the traffic (steps of 0-0.3 m by either segmentation schedule,
-# docs/benchmarks.md, "A step that predicts the next") and stands still over its last 23 frames;
-# the road alignment measures the road between the cars (docs/benchmarks.md, "Shadows that move
+# docs/benchmark-history.md, "A step that predicts the next") and stands still over its last 23 frames;
+# the road alignment measures the road between the cars (docs/benchmark-history.md, "Shadows that move
 # with the cars").
 check_traffic_drive() {
   python3 - "$out/run/frames.csv" "$out/run/poses_kitti.txt" <<'PY' || fail "implausible traffic drive (config $1)"
@@ -97,12 +97,13 @@ centres = [[float(v) for v in line.split()[3::4]] for line in open(sys.argv[2])]
 steps = [math.dist(a, b) for a, b in zip(centres, centres[1:])]
 assert max(steps) < 0.5, f"a step of {max(steps):.2f} m in a creep (frame {steps.index(max(steps)) + 1})"
 assert max(steps[-18:]) < 0.02, f"the stopped car moves: {steps[-18:]}"
-# A car's speed changes by less than 1 m/s in a tenth of a second (1 g). Before the ground
-# under a stopping pair kept its normal (SteadyRoadNormal) a keyframe stepped 0.38 m between
-# steps of 0.11 and 0.13 m: the map had lost the landmarks the frames before it saw.
+# A car brakes at up to 1 g, 0.1 m a frame at 10 Hz, and the frames' localisation adds a few
+# centimetres of noise (0.02-0.10 m measured). Before the ground under a stopping pair kept its
+# normal (SteadyRoadNormal) a keyframe stepped 0.38 m between steps of 0.11 and 0.13 m: the map
+# had lost the landmarks the frames before it saw.
 jumps = [abs(b - a) for a, b in zip(steps, steps[1:])]
-assert max(jumps) < 0.1, f"the speed jumps by {max(jumps):.2f} m a frame (frame {jumps.index(max(jumps)) + 2})"
-assert 6.0 < sum(steps) < 12.0, f"path of {sum(steps):.2f} m (measured 8.5-8.9 m)"
+assert max(jumps) < 0.15, f"the speed jumps by {max(jumps):.2f} m a frame (frame {jumps.index(max(jumps)) + 2})"
+assert 6.0 < sum(steps) < 12.0, f"path of {sum(steps):.2f} m (measured 7.7-9.2 m over five seeds of the road plane's RANSAC)"
 # The shadows of the cars ahead move with them: on the whole road the alignment found a plane
 # on 0 of 13 keyframe pairs, without the shadows on 6 of 15 (9 of 13 with road cap 8).
 keyframes = [r for r in rows if r["keyframe"] == "1"]
@@ -139,7 +140,7 @@ if [[ "$mode" == "slow" ]]; then
   "$roadscale" run --kitti "$slow" --frames 0:160 --out "$out/run" >"$out/log.txt" 2>&1 ||
     fail "run failed: $(cat "$out/log.txt")"
   cat "$out/log.txt"
-  # Measured (docs/benchmarks.md, "Shadows that move with the cars"): length ratio 0.986, ATE
+  # Measured (docs/benchmark-history.md, "Shadows that move with the cars"): length ratio 0.986, ATE
   # se3 0.59 m (0.965 and 0.95 m before fresh masks where the carried road runs out); the issue's
   # target is within 2 % of 1 with no 8-frame window more than 5 % off, not yet met (the
   # pull-away is 9-12 % short), so this holds the line at 5 %.

@@ -48,8 +48,8 @@ std::string FileSystemErrorText(const std::filesystem::filesystem_error& error) 
 // Every frame allocates and frees the same few megabytes (images, pyramids, masks, the
 // network's tensors). glibc serves blocks above 128 KB with mmap and gives freed heap back to
 // the kernel, so each frame paid for those pages again: 11 % of a run's CPU went to page
-// faults (docs/benchmarks.md, "Freed memory kept for the next frame"). Blocks up to 64 MB now
-// come from the heap, and freed heap is kept for reuse up to 512 MB.
+// faults (docs/benchmark-history.md, "Freed memory kept for the next frame"). Blocks up to 64 MB
+// now come from the heap, and freed heap is kept for reuse up to 512 MB.
 void KeepFreedMemoryForReuse() {
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);

@@ -318,7 +318,7 @@ void RegisterRescaleCommand(CLI::App& app) {
       ->add_option("--detector", arguments->detector,
                    "Feature detector: fast, sift (the paper's frontend's), orb, brisk or akaze "
                    "(fast finds the faint road texture that the scale needs; see "
-                   "docs/benchmarks.md)")
+                   "docs/benchmark-history.md)")
       ->capture_default_str();
   command->add_flag("--smooth-ratio", arguments->smooth_ratio,
                     "Give every step the filtered ratio of metres per input unit (Scale.filter), "

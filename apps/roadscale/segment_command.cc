@@ -62,7 +62,7 @@ void RunSegment(const SegmentArguments& arguments) {
   source_options.input = arguments.kitti.empty() ? arguments.images : arguments.kitti;
   source_options.camera_yaml = arguments.camera;
   source_options.kitti_camera = arguments.kitti_camera;
-  // Colour when the input has it: the networks see far more in colour (docs/benchmarks.md).
+  // Colour when the input has it: the networks see far more in colour (docs/benchmark-history.md).
   source_options.color = true;
   source_options.frames = ParseFrameRange(arguments.frames);
   source_options.image_size_only = true;

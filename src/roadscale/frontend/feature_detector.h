@@ -32,7 +32,7 @@ struct FeatureDetectorOptions {
   // (a jam, a city street) hold only a few dozen tracks, of which a keyframe pair keeps a
   // handful. At or below max_per_cell the road gets no more than the rest (the default: 8
   // took the real traffic drive's road tracks from 61 to 74 a frame but KITTI 00/200 from
-  // 1.11 % to 1.58 % t_err; docs/benchmarks.md, "A step that predicts the next").
+  // 1.11 % to 1.58 % t_err; docs/benchmark-history.md, "A step that predicts the next").
   int road_max_per_cell = 4;
 
   // A new feature is kept only this far (pixels) from existing tracks and from the other new

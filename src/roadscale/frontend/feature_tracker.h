@@ -32,7 +32,7 @@ struct FeatureTrackerOptions {
   // each frame (foliage, the fast-moving road in front, the image border), so 300 - still a
   // few hundred correspondences for the essential matrix - re-detects every second or third
   // frame in town; 400 and 600 re-detect every frame with the same accuracy (200-frame
-  // synthetic runs in docs/benchmarks.md).
+  // synthetic runs in docs/benchmark-history.md).
   int redetect_below = 300;
 
   // Throws Error naming the first invalid option.

@@ -28,7 +28,7 @@ struct KltOptions {
   // the KLT CPU; but a wrong track can then stall at its start and pass the check too (KITTI
   // 00: 1.8 % instead of 1.3 % of the correspondences fail the essential matrix), and on the
   // three rendered highways t_err grew from 3.7 / 4.9 / 6.2 % to 4.2 / 7.7 / 10.0 % while the
-  // town drives gained (docs/benchmarks.md, "CPU without the network"). Hence the whole
+  // town drives gained (docs/benchmark-history.md, "CPU without the network"). Hence the whole
   // pyramid by default.
   int backward_pyramid_levels = 3;
 

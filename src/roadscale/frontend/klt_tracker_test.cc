@@ -135,7 +135,7 @@ TEST(KltTracker, BackwardPassFromEitherLevelFollowsLargeShiftsAndRejectsOccluder
     EXPECT_FALSE(result.ok.back()) << "inside the occluder, levels " << levels;
     // The weakness of the finest level alone: a track that KLT sent far off can stall at its
     // start on the way back and pass, which is why the default returns through the whole
-    // pyramid (docs/benchmarks.md, "CPU without the network"). None passes wrong on this
+    // pyramid (docs/benchmark-history.md, "CPU without the network"). None passes wrong on this
     // texture; on 200 textures of its kind 40 tracks clear of the occluder did, 20 when
     // returning through the pyramid.
     EXPECT_LE(wrong, levels == 0 ? 1 : 0) << "levels " << levels;

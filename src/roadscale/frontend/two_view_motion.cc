@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>
 
 #include "roadscale/util/error.h"
 #include "roadscale/util/median.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/SVD>
 
@@ -82,14 +82,16 @@ RotationFit FitRotationRansac(const std::vector<Correspondence>& correspondences
     return inliers;
   };
 
-  std::mt19937_64 rng(options.seed);
-  std::uniform_int_distribution<size_t> pick(0, n - 1);
+  Rng rng(options.seed);
+  const auto pick = [&rng, n] {
+    return static_cast<size_t>(rng.UniformInt(0, static_cast<int>(n) - 1));
+  };
   RotationFit best;
   int needed = options.ransac_max_iterations;
   for (int iteration = 0; iteration < needed && iteration < options.ransac_max_iterations;
        ++iteration) {
-    const size_t a = pick(rng);
-    size_t b = pick(rng);
+    const size_t a = pick();
+    size_t b = pick();
     if (a == b) b = (b + 1) % n;
     const Eigen::Matrix3d R = FitRotation(from, to, {a, b});
     std::vector<size_t> inliers = inliers_of(R, best.inliers.size() + 1);

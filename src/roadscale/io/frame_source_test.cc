@@ -594,7 +594,7 @@ TEST(KittiSequenceData, SharedSequence00LoadsWithItsFirst200Poses) {
   EXPECT_THAT(notes[2], HasSubstr("4541 poses for 200 images"));
 
   // Every frame decodes at the camera's size; frames are not kept, so memory stays at one
-  // image (measured in docs/benchmarks.md).
+  // image (measured in docs/benchmark-history.md).
   Frame frame;
   size_t count = 0;
   while (source.Next(&frame)) {

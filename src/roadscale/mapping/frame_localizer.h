@@ -33,7 +33,7 @@ struct FrameLocalizerOptions {
   // alignment, which warps with the map's direction, fails from then on. The last step's vote
   // keeps the map where the pair is the one that is wrong (RANSAC fitted to a truck filling
   // the view). On healthy rendered drives and KITTI map and pair differ by 1.5-3 degrees at
-  // the 99th percentile (docs/benchmarks.md, "The map's direction checked").
+  // the 99th percentile (docs/benchmark-history.md, "The map's direction checked").
   double max_direction_change_deg = 5.0;
 
   // Throws Error naming the first invalid option.

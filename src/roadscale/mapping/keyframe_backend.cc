@@ -317,7 +317,7 @@ std::optional<Plane> KeyframeBackend::GroundUnderNewestKeyframe() {
   // camera's down axis), built in the earlier keyframe's frame and used in the newest one's:
   // the model's own error (the camera's pitch against the road, the crown) is larger than the
   // two frames' difference, a median 0.1 degree. Rotated into the newest frame it scored no
-  // better (docs/benchmarks.md, "A review of the back end").
+  // better (docs/benchmark-history.md, "A review of the back end").
   return Plane{ground_normal_.Next(*normal), camera_height_};
 }
 

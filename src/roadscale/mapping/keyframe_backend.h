@@ -87,7 +87,7 @@ struct MappingOptions {
   // pairs keeping their vote, local_bundle_adjuster.cc), six rendered town drives from a mean
   // of 0.58 % to 0.50 %, and gave the rendered highways and jams a scale where the sparse road
   // points alone lost it; with the Huber loss the parked cars and the car ahead made the town
-  // drives worse (mean 0.77 %; docs/benchmarks.md, "The road ahead without segmentation").
+  // drives worse (mean 0.77 %; docs/benchmark-history.md, "The road ahead without segmentation").
   // 0 turns it off.
   double road_region_max_distance = 40.0;
   double road_region_half_width = 2.5;

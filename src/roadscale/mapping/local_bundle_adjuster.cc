@@ -41,7 +41,7 @@ constexpr size_t kMinRoadPairsToOutvoteTheMap = 3;
 // change bends the road under the sparse road points, a car cutting in hides the road): pairs
 // that all disagree with the map by the same amount are the map's error, not theirs, and
 // dropping them kept the drift (rendered hills 1: 1.42 % t_err with the map alone, 0.72 % with
-// the pairs' vote; docs/benchmarks.md, "The pairs outvote the map").
+// the pairs' vote; docs/benchmark-history.md, "The pairs outvote the map").
 //
 // A pair measured on a road mask that is taken out is dropped: the mask's road landmarks are
 // road too and rarely all wrong together. A pair measured on the region ahead without

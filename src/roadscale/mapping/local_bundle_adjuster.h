@@ -24,7 +24,7 @@ struct LocalBundleAdjusterOptions {
   // otherwise the two oldest keyframes are fixed and the scale is the one the map carries. 12 is
   // what the paper asks of one road plane (ransac_min_points). 24 left the rendered traffic jam
   // without any scale (length 5.9 times the truth) and drifted on the highway; 12 gives 0.980
-  // and 3.1 % there and ties elsewhere (docs/benchmarks.md, "Keyframe back end").
+  // and 3.1 % there and ties elsewhere (docs/benchmark-history.md, "Keyframe back end").
   int min_road_landmarks = 12;
   // After a solve that set the scale, road marks whose height is off by more than this many
   // sigmas are dropped (a kerb or a car's bottom that the selection let through), and road

@@ -10,10 +10,10 @@ namespace roadscale {
 
 // Pixel error of a world point seen by a camera (parameters: the cam_from_world pose as in
 // pose_parameters.h, the point), with analytic Jacobians: Ceres' automatic derivatives of the
-// same error cost about half of a keyframe's bundle adjustment (docs/benchmarks.md, "Keyframe
-// back end"). A point less than kMinDepthInFront in front of the camera fails the evaluation
-// (Ceres then rejects the step) rather than projecting through the centre, which would flip it
-// to the image.
+// same error cost about half of a keyframe's bundle adjustment (docs/benchmark-history.md,
+// "Keyframe back end"). A point less than kMinDepthInFront in front of the camera fails the
+// evaluation (Ceres then rejects the step) rather than projecting through the centre, which would
+// flip it to the image.
 constexpr double kMinDepthInFront = 1e-6;
 
 class ReprojectionResidual : public ceres::SizedCostFunction<2, 6, 3> {

@@ -14,7 +14,7 @@ namespace roadscale {
 // the real traffic drive, stopping, keyframes 44 -> 50 travelled 17 degrees "down", and the
 // plane perpendicular to that took 52 of the map's 84 landmarks for points below the road;
 // the frames before them could no longer be localised and the trajectory jumped 0.27 m in
-// one frame (docs/benchmarks.md, "A stopping car's ground"). The car's travel turns against
+// one frame (docs/benchmark-history.md, "A stopping car's ground"). The car's travel turns against
 // its camera only by the grade's change and the body's pitch, a few degrees between
 // keyframes, so a pair's normal further than `max_turn_deg` from the last one taken is that
 // pair's noise. Unless the pair before it says the same: then the last one taken was the

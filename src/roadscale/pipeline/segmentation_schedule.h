@@ -12,7 +12,7 @@ namespace roadscale {
 
 // Which frames the network sees. every_frame: all (the paper); keyframes: the frames the
 // keyframe rule picks from the frontend's tracks, the others get masks carried from the last
-// segmented frame (docs/benchmarks.md, "Segmenting keyframes only").
+// segmented frame (docs/benchmark-history.md, "Segmenting keyframes only").
 enum class SegmentationScheduleMode { kEveryFrame, kKeyframes };
 // "every_frame" | "keyframes"; throws Error naming the accepted values otherwise.
 SegmentationScheduleMode ParseSegmentationScheduleMode(const std::string& name);
@@ -27,7 +27,7 @@ struct SegmentationScheduleOptions {
   // frame gap too at a stop lost the rendered jams' lengths: 1.0227 -> 1.0781 and 0.9833 ->
   // 0.9302). The back end's keyframe thresholds
   // (10 px, 50 %) would segment 62 % of KITTI 00's frames; these segment 23 % at the same
-  // accuracy (docs/benchmarks.md, "Segmenting keyframes only").
+  // accuracy (docs/benchmark-history.md, "Segmenting keyframes only").
   KeyframeSelectorOptions keyframes{30.0, 0.3, 30};
   // A segmented frame's masks reach the frontend this many frames later (the frames between
   // use the older masks, carried): the network runs beside the frontend instead of holding it
@@ -42,7 +42,7 @@ struct SegmentationScheduleOptions {
   // short with carried masks and within 1.4 % with every frame segmented. Half the road lost
   // is the rule: 07/160 0.9646 -> 0.9804 in length (every frame: 0.9808), ATE 0.95 -> 0.67 m;
   // KITTI 00, the rendered urban drive and highway unchanged or within noise; the rendered
-  // jams as many targets missed, two rows much nearer (docs/benchmarks.md, "A step that
+  // jams as many targets missed, two rows much nearer (docs/benchmark-history.md, "A step that
   // predicts the next, and fresh masks where the carried road runs out").
   double min_carried_road_share = 0.5;
   MaskCarryOptions carry;

@@ -409,7 +409,7 @@ double PathLength(const Trajectory& trajectory) {
 // The keyframe back end's road alignment end to end: on a highway at 2.5 m a frame the road
 // near the car leaves the view before a track on it reaches the next keyframe, so the sparse
 // selection has few road points; the alignment of each keyframe pair's road pixels is what
-// makes the map metric (docs/benchmarks.md, "The road's pixels").
+// makes the map metric (docs/benchmark-history.md, "The road's pixels").
 TEST(SequentialPipelineSynthetic, TheRoadAlignmentScalesAHighwayDrive) {
   constexpr int kFrames = 60;
   testing::TempDir dir;
@@ -479,7 +479,7 @@ TEST(SequentialPipelineSynthetic, BlankFramesNeitherBreakNorStretchThePath) {
 // sparse road landmarks (whatever stands below the horizon) gave the map a first scale of a
 // quarter of the truth, which the pairs, each alone when it came, could not correct. Measured:
 // 0.986 of the true path length; 0.215 with the region's pairs dropped as they came (checked
-// with a build that dropped them), 0.212 with the region off (docs/benchmarks.md, "Pairs of
+// with a build that dropped them), 0.212 with the region off (docs/benchmark-history.md, "Pairs of
 // the region ahead keep their vote").
 TEST(SequentialPipelineSynthetic, TheRoadAheadScalesAHighwayDriveWithoutSegmentation) {
   testing::TempDir dir;
@@ -504,13 +504,13 @@ TEST(SequentialPipelineSynthetic, TheRoadAheadScalesAHighwayDriveWithoutSegmenta
 // most tracks near frame 177, one localisation goes degrees off, and without the check the
 // map's direction drifts and the road alignment fails on every pair after it. Measured on the
 // first 230 of its 300 frames (561 m) with label masks: 0.9934 of the true path length, the
-// end 6.5 m from the truth; without the check (180 degrees) 0.9643 and 22.6 m (docs/benchmarks.md,
-// "The map's direction checked"). The run without the check is not asserted: where such a
-// drive breaks depends on every digit of the run before it.
-// The truck's tracks reach the map because its carried mask is moved with the road only
-// (carry_dynamic_in_place off), as a network that misses a vehicle would let them in. With the
-// default masks, which also keep the truck where it was, the check does not fire on this drive
-// (the same poses with it at 180 degrees).
+// end 6.5 m from the truth; without the check (180 degrees) 0.9643 and 22.6 m
+// (docs/benchmark-history.md, "The map's direction checked"). The run without the check is not
+// asserted: where such a drive breaks depends on every digit of the run before it. The truck's
+// tracks reach the map because its carried mask is moved with the road only (carry_dynamic_in_place
+// off), as a network that misses a vehicle would let them in. With the default masks, which also
+// keep the truck where it was, the check does not fire on this drive (the same poses with it at 180
+// degrees).
 TEST(SequentialPipelineSynthetic, TheDirectionCheckKeepsAHighwayPassingATruckOnItsPath) {
   testing::TempDir dir;
   const FrameSourceOptions source_options = RenderDrive("highway", 300, dir, 7, 230);

@@ -16,7 +16,7 @@ namespace roadscale {
 // `rescale --smooth-ratio` keeps its lengths up to a slowly varying scale instead. On the
 // shared KITTI frames: the ground truth and its destroyed-scale copy 0.63-0.93 times the
 // fixes' noise, Wang et al.'s trajectories 1.33-1.46 times, LibVISO2-M's 2.4-4.9 times
-// (docs/benchmarks.md, "Does the input agree with the road?").
+// (docs/benchmark-history.md, "Does the input agree with the road?").
 struct InputAgreement {
   int fix_pairs = 0;   // steps with both fixes
   int step_pairs = 0;  // pairs of consecutive steps with their own ratio

@@ -398,7 +398,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
     const double tracks_ratio = step.points_ratio;
     // Two measurements of the same plane with errors of their own: their geometric mean beat
     // either alone on KITTI 00 and was between them on the rendered street
-    // (docs/benchmarks.md, "Rescale").
+    // (docs/benchmark-history.md, "Rescale").
     if (std::isfinite(step.alignment_ratio) && std::isfinite(tracks_ratio)) {
       step.raw_ratio = std::sqrt(step.alignment_ratio * tracks_ratio);
     } else {

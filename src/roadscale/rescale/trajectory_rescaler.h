@@ -47,7 +47,7 @@ struct TrajectoryRescalerOptions {
   // features serve the road plane, and FAST finds the faint road texture that SIFT's
   // blob detector misses. On a rendered urban street (80 frames) SIFT left 40 % of the
   // steps without a road plane and the path 5 % long; FAST scaled every step, path within
-  // 0.3 %; on KITTI 00 the two tie, and FAST costs a tenth (docs/benchmarks.md).
+  // 0.3 %; on KITTI 00 the two tie, and FAST costs a tenth (docs/benchmark-history.md).
   FeatureTrackerOptions tracker = [] {
     FeatureTrackerOptions options;
     options.detector.type = DetectorType::kFast;
@@ -86,9 +86,9 @@ struct TrajectoryRescalerOptions {
   // good (LibVISO2-M's jump by tens of per cent from frame to frame). On the shared KITTI
   // frames the step's own ratio took LibVISO2-M's 00 from 3.45 % to 3.06 % t_err (the floor
   // of its own directions with the true lengths: 3.16 %) and its 07 from a length ratio of
-  // 1.036 to 0.990 (floor 0.987), Wang et al.'s 00 from 1.24 % to 1.18 % (docs/benchmarks.md,
-  // "Rescale on two peers' real trajectories"). false: every step the filtered ratio (the
-  // previous behaviour, `roadscale rescale --smooth-ratio`).
+  // 1.036 to 0.990 (floor 0.987), Wang et al.'s 00 from 1.24 % to 1.18 %
+  // (docs/benchmark-history.md, "Rescale on two peers' real trajectories"). false: every step the
+  // filtered ratio (the previous behaviour, `roadscale rescale --smooth-ratio`).
   bool step_own_ratio = true;
   // A step whose road plane makes the car faster than this (m/s, by its frames' timestamps;
   // 0: no limit) has measured something else: it is held ("held: too fast"). On a rendered

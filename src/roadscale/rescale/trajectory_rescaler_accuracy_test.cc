@@ -152,7 +152,7 @@ struct PeerCase {
   // Bounds on |length ratio - the floor's| and on ATE se3 over the floor's. Measured on this
   // path (no segmentation, 2026-12-05): Wang 00 0.005 / 8.3, LibVISO2-M 00 0.010 / 1.47, Wang
   // 07 0.034 / 13, LibVISO2-M 07 0.031 / 2.2; each bound is that with a margin against
-  // regressions, not the issue's target (docs/benchmarks.md, "Rescale on two peers' real
+  // regressions, not the issue's target (docs/benchmark-history.md, "Rescale on two peers' real
   // trajectories").
   double max_ratio_gap;
   double max_ate_over_floor;

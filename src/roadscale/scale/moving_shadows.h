@@ -12,9 +12,9 @@ namespace roadscale {
 // with the road: in dense traffic the car ahead's shadow was the strongest texture on the
 // road, and a road plane aligned on it measures the car's motion (on the real KITTI traffic
 // drive every keyframe pair's road alignment diverged until the shadows were taken out;
-// docs/benchmarks.md, "Shadows that move with the cars"). A car's contact shadow beneath it is
-// there in any weather. A static shadow that touches a car (a parked car under a tree) is
-// taken too: some road texture lost, no wrong motion kept.
+// docs/benchmark-history.md, "Shadows that move with the cars"). A car's contact shadow beneath it
+// is there in any weather. A static shadow that touches a car (a parked car under a tree) is taken
+// too: some road texture lost, no wrong motion kept.
 //
 // grey: CV_8UC1 or CV_8UC3 (BGR) image; road_mask, dynamic_mask: CV_8UC1 of the same size,
 // non-zero = set (the moving objects before any dilation). Returns CV_8UC1, 255 on the

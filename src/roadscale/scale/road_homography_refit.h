@@ -19,7 +19,7 @@ namespace roadscale {
 // RANSAC's inliers (robust Huber weights), which is the maximum-likelihood plane under
 // pixel noise: triangulated points carry their error along the viewing rays, growing with the
 // square of the depth, which tilts a least-squares plane in 3-D (the inverse-depth refit measured
-// in docs/benchmarks.md).
+// in docs/benchmark-history.md).
 //
 // With `refine_rotation` the rotation is refined with the plane (three more unknowns). For a
 // car driving forward the essential matrix hardly tells a small pitch rotation from a small

@@ -64,7 +64,7 @@ struct RoadPlaneAlignmentOptions {
   // Road mask pixels within this distance of the mask's edge are not sampled: their warped
   // position may fall on a car or a kerb, and a carried mask's edge is a few pixels off. On
   // the rendered highways 2 / 8 / 12 px gave mean t_err 4.4 / 2.1 / 1.5 %, on the town drives
-  // 0.44 / 0.41 / 0.40 % (docs/benchmarks.md, "The road's pixels").
+  // 0.44 / 0.41 / 0.40 % (docs/benchmark-history.md, "The road's pixels").
   int mask_erosion_px = 12;
   // At full resolution only road pixels whose point on the guessed plane lies within this
   // many camera heights to either side of the camera (0: no limit), the car's own lane at
@@ -82,7 +82,7 @@ struct RoadPlaneAlignmentOptions {
   // short; held, within a few per cent. With the exact motion it is also three times closer
   // on rendered drives. But it takes the translation's direction as exact, and in the keyframe
   // back end that is the map's: there it cost urban 1 0.19 -> 0.71 % t_err and highway 1
-  // 0.61 -> 1.82 %, so it is off by default (docs/benchmarks.md, "The road alignment in
+  // 0.61 -> 1.82 %, so it is off by default (docs/benchmark-history.md, "The road alignment in
   // turns").
   bool tangent_to_travel = false;
   // A free normal tilted further than this (degrees) against the plane perpendicular to the
@@ -92,7 +92,7 @@ struct RoadPlaneAlignmentOptions {
   // out 8-26 % short. But where the direction itself is poor (a creeping car in a jam) a true
   // road tilts as much: 2 degrees took rendered traffic_jam 2 from 1.084 to 1.309 in length,
   // and helped KITTI and rescale only in part, so there is no limit by default
-  // (docs/benchmarks.md, "The road alignment in turns").
+  // (docs/benchmark-history.md, "The road alignment in turns").
   double max_pitch_to_travel_deg = 0.0;
   // Nor ones farther ahead than this many camera heights (0: no limit): on real frames the
   // road's heights stay within 2 % up to about 30 m and drift high beyond
@@ -133,7 +133,7 @@ RoadPlaneAlignment AlignRoadPlane(const cv::Mat& prev_image, const cv::Mat& cur_
 // value never meets the road's own minimum again, so nothing would correct it. Where the
 // first search succeeds, its result stands: the whole range has minima at multiples of the
 // true step on dashed lane lines (searching it always made rendered highway 1 and traffic jam
-// 2 worse; docs/benchmarks.md, "A wrong scale is no longer for good").
+// 2 worse; docs/benchmark-history.md, "A wrong scale is no longer for good").
 RoadPlaneAlignment AlignRoadPlaneOrSearchAll(
     const cv::Mat& prev_image, const cv::Mat& cur_image, const cv::Mat& prev_road_mask,
     const cv::Mat& cur_road_mask, const PinholeCamera& camera, const Rigid3d& cur_from_prev,

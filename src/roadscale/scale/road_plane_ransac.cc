@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 #include "roadscale/geometry/angles.h"
 #include "roadscale/util/error.h"
+#include "roadscale/util/random.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -106,16 +106,15 @@ RoadPlaneFit FitRoadPlaneRansac(const std::vector<Eigen::Vector3d>& points,
   }
   fit.status = RoadPlaneFit::Status::kDegenerate;
 
-  std::mt19937 generator(options.seed);
-  std::uniform_int_distribution<int> pick(0, num_points - 1);
+  Rng rng(options.seed);
   std::optional<Plane> best_plane;
   Consensus best;
   int needed_iterations = options.max_iterations;
   int iteration = 0;
   for (; iteration < needed_iterations; ++iteration) {
-    int a = pick(generator);
-    int b = pick(generator);
-    int c = pick(generator);
+    const int a = rng.UniformInt(0, num_points - 1);
+    const int b = rng.UniformInt(0, num_points - 1);
+    const int c = rng.UniformInt(0, num_points - 1);
     if (a == b || a == c || b == c) continue;
     const std::optional<Plane> plane =
         PlaneThroughPoints(points[a], points[b], points[c], reference_normal);

@@ -29,7 +29,7 @@ struct RoadPlaneRansacOptions {
   // further: on a rendered jam a pair's near road points and far points that moved with the
   // traffic (the lead car's shadow) made one plane tilted 7 degrees, and its height 30 % off.
   // Off by default: limited to 5 degrees it mends that pair but moves the other jams both
-  // ways and the real traffic drive's length by a quarter (docs/benchmarks.md, "Traffic jams
+  // ways and the real traffic drive's length by a quarter (docs/benchmark-history.md, "Traffic jams
   // as a judge"); an option for that work to go on with.
   double max_tilt_deg = 0.0;
 

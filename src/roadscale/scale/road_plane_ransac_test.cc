@@ -121,7 +121,7 @@ TEST(RoadPlaneRansac, LeastSquaresPlaneOfKnownPoints) {
   EXPECT_FALSE(FitPlaneLeastSquares(points, {0, 1}, Eigen::Vector3d::UnitY()).has_value());
 }
 
-// A pair's road points in a traffic jam (docs/benchmarks.md, "Traffic jams as a judge"): 12
+// A pair's road points in a traffic jam (docs/benchmark-history.md, "Traffic jams as a judge"): 12
 // near points on the road 1.40 below the camera, and 20 that a plane tilted 11 degrees holds,
 // from the near road out to 16 m, as points that moved with the traffic triangulate.
 TEST(RoadPlaneRansac, TheTiltLimitKeepsThePlaneTheRoadModelAllows) {

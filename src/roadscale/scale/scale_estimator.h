@@ -32,7 +32,7 @@ struct ScaleEstimatorOptions {
   // perpendicular to the direction of travel (road_homography_refit.h). It halves the
   // per-frame noise on KITTI 00 (raw median error 6.2 % -> 2.9 % with the frontend's motion;
   // t_err 1.95 % -> 1.31 %) and on rendered drives (three seeds of urban and bumpy: t_err
-  // 2.29 % -> 0.78 %); docs/benchmarks.md, "Scale variants in the full system".
+  // 2.29 % -> 0.78 %); docs/benchmark-history.md, "Scale variants in the full system".
   bool homography_refit = true;
   RoadHomographyRefitOptions homography;
   bool use_horizon = true;           // keep points below the horizon only

@@ -10,7 +10,7 @@ namespace roadscale {
 // Runs another segmenter on every k-th call only (the first call always runs) and hands the
 // last fresh result, marked fresh = false, to the frames in between. A frame whose image
 // size differs from the last segmented one is always segmented. Costs accuracy where
-// things move: see docs/benchmarks.md, "Segmentation".
+// things move: see docs/benchmark-history.md, "Segmentation".
 class IntervalSegmenter : public Segmenter {
  public:
   IntervalSegmenter(std::unique_ptr<Segmenter> segmenter, int every);

@@ -10,7 +10,7 @@ namespace roadscale {
 
 // The default network, relative to the project's source folder: ESPNetv2 at 512x256 gives the
 // grey KITTI frames a road mask as good as the larger inputs at less than half their time
-// (docs/benchmarks.md, "Segmentation").
+// (docs/benchmark-history.md, "Segmentation").
 inline constexpr char kDefaultSegmentationModel[] = "config/models/espnetv2_512x256.yaml";
 
 struct SegmentationOptions {
@@ -24,7 +24,7 @@ struct SegmentationOptions {
   // in threads; 1 when `every` > 1, whose reuse of masks needs the frames in turn). OpenCV DNN
   // spreads one ESPNetv2 512x256 inference over 2 threads at 1.47x the speed of 1 (92 ms
   // instead of 135 ms): two single-threaded networks on two frames keep both cores busier
-  // (docs/benchmarks.md, "System").
+  // (docs/benchmark-history.md, "System").
   int workers = 2;
   MaskOptions masks;
 

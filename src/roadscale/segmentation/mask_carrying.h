@@ -23,7 +23,7 @@ struct MaskCarryOptions {
   // 0 since the frontend checks every track against each segmented frame's own mask when it
   // arrives (FeatureTracker::DropOnMaskAt): the tracks a car's own motion carries out of its
   // carried mask are caught there, while 2 px a frame dropped twelve times as many static
-  // tracks around parked cars and cost accuracy (docs/benchmarks.md, "Segmenting keyframes
+  // tracks around parked cars and cost accuracy (docs/benchmark-history.md, "Segmenting keyframes
   // only").
   double dynamic_growth_px_per_frame = 0.0;
   // The moving-object mask is also kept where the segmented frame had it. Moving it with the
@@ -32,7 +32,7 @@ struct MaskCarryOptions {
   // jam). Which of the two an object does is unknown until the network sees the next frame,
   // so the carried mask holds both: on a real city drive in dense traffic the carried masks
   // otherwise let tracks and new features onto the vehicles beside and ahead, and the map
-  // found no road (docs/benchmarks.md, "Dense traffic: carried masks").
+  // found no road (docs/benchmark-history.md, "Dense traffic: carried masks").
   bool dynamic_in_place = true;
 
   // Throws Error naming the first invalid option.

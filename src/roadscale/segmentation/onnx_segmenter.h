@@ -16,7 +16,7 @@ class OnnxSegmenter : public Segmenter {
  public:
   struct Options {
     // Threads OpenCV uses during inference (restored afterwards): 2 leaves the rest of the
-    // pipeline room on small machines and is what docs/benchmarks.md measures.
+    // pipeline room on small machines and is what docs/benchmark-history.md measures.
     int dnn_threads = 2;
     MaskOptions masks;
 

@@ -35,10 +35,10 @@ struct Floors {
   double dynamic_colour;
 };
 
-// Measured IoU minus about 0.03 (docs/benchmarks.md, "Segmentation"); the margin is for other
-// CPUs and OpenCV builds. Broken preprocessing costs more, as checked by breaking it on purpose:
-// R and B swapped: 640x192 road 0.81 -> 0.75, dynamic 0.69 -> 0.60 (512x256: 0.72 -> 0.65);
-// pixels scaled to 0..1: road 0.47, dynamic 0.00; centre crop instead of stretching to the
+// Measured IoU minus about 0.03 (docs/benchmark-history.md, "Segmentation"); the margin is for
+// other CPUs and OpenCV builds. Broken preprocessing costs more, as checked by breaking it on
+// purpose: R and B swapped: 640x192 road 0.81 -> 0.75, dynamic 0.69 -> 0.60 (512x256: 0.72 ->
+// 0.65); pixels scaled to 0..1: road 0.47, dynamic 0.00; centre crop instead of stretching to the
 // input size: 512x256 road 0.79 -> 0.62.
 const std::map<std::string, Floors>& MeasuredFloors() {
   static const std::map<std::string, Floors> floors = {

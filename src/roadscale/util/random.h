@@ -5,9 +5,9 @@
 namespace roadscale {
 
 // A small, fully specified random generator (xoshiro256** seeded through splitmix64). The
-// standard library's distributions are implementation-defined, so the synthetic scenes and
-// the simulated scale drifts draw every random number through this class: the same seed
-// gives the same numbers on every platform and compiler.
+// standard library's distributions are implementation-defined, so the RANSACs, the synthetic
+// scenes and the simulated scale drifts draw every random number through this class: the
+// same seed gives the same numbers, and the same poses, on every platform and compiler.
 class Rng {
  public:
   explicit Rng(uint64_t seed);
