@@ -1,6 +1,7 @@
 #include "roadscale/mapping/steady_road_normal.h"
 
 #include <cmath>
+#include <string>
 
 #include "roadscale/scale/road_plane.h"
 #include "roadscale/util/error.h"
@@ -9,9 +10,9 @@ namespace roadscale {
 
 SteadyRoadNormal::SteadyRoadNormal(double max_turn_deg)
     : max_turn_rad_(max_turn_deg * M_PI / 180.0) {
-  if (!(max_turn_deg > 0.0 && max_turn_deg < 90.0)) {
+  if (!(max_turn_deg > 0.0 && max_turn_deg <= 90.0)) {
     throw Error(
-        "steady road normal: the largest turn between keyframes must be in (0, 90) "
+        "steady road normal: the largest turn between keyframes must be in (0, 90] "
         "degrees, got " +
         std::to_string(max_turn_deg));
   }

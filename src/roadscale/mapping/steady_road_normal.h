@@ -21,7 +21,7 @@ namespace roadscale {
 // wrong one, and holding it would lock the map to it.
 class SteadyRoadNormal {
  public:
-  // Throws Error unless 0 < max_turn_deg < 90.
+  // Throws Error unless 0 < max_turn_deg <= 90 (the road model's own range for its angle).
   explicit SteadyRoadNormal(double max_turn_deg);
 
   // The normal to use for the newest pair, whose own normal is `pair_normal` (unit length).

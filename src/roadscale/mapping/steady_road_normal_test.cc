@@ -44,7 +44,8 @@ TEST(SteadyRoadNormal, TakesTheNormalThatTwoPairsInARowAgreeOn) {
 
 TEST(SteadyRoadNormal, RejectsATurnLimitOutsideZeroToNinetyDegrees) {
   EXPECT_THROW(SteadyRoadNormal(0.0), Error);
-  EXPECT_THROW(SteadyRoadNormal(90.0), Error);
+  EXPECT_NO_THROW(SteadyRoadNormal(90.0));
+  EXPECT_THROW(SteadyRoadNormal(90.5), Error);
   EXPECT_THROW(SteadyRoadNormal(std::nan("")), Error);
 }
 
