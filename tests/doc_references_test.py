@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Every citation of a benchmarks section names one that exists.
+"""Every citation of a benchmarks section names one that exists, and the front page's index
+lists every section of the history.
 
 The code's comments and the docs cite measurements by the file (benchmark-history.md or
 benchmarks.md) and the section's title in double quotes. This finds each such citation in the tracked files and checks that the
@@ -41,7 +42,12 @@ for name in files:
         target = match.group(1) + ".md"
         if not any(t.startswith(cited) or cited.startswith(t) for t in known[target]):
             errors.append(f"{name}: cites {target}, \"{cited}\": no such section")
+# The front page's index lists every section of the history.
+index = docs["benchmarks.md"].split("## The history's sections", 1)[-1]
+for line in docs["benchmark-history.md"].splitlines():
+    if line.startswith("### ") and f"- {line[4:]}" not in index:
+        errors.append(f"benchmarks.md: the history's section \"{line[4:]}\" is not in its index")
 for error in errors:
     print(error)
-print(f"{len(errors)} citation(s) of a missing section")
+print(f"{len(errors)} citation(s) of a missing section or section(s) missing from the index")
 sys.exit(1 if errors else 0)
