@@ -3,9 +3,10 @@
 lists every section of the history.
 
 The code's comments and the docs cite measurements by the file (benchmark-history.md or
-benchmarks.md) and the section's title in double quotes. This finds each such citation in the tracked files and checks that the
-cited file has a heading or a bold paragraph lead starting with that title. Titles may wrap
-onto the next comment line; the part before the break is checked.
+benchmarks.md) and the section's title in double quotes. This finds each such citation in the
+tracked files and checks that the cited file has a heading or a bold paragraph lead starting
+with that title. Titles may wrap onto the next comment line; the part before the break is
+checked.
 Usage: doc_references_test.py REPO_ROOT
 """
 import pathlib
