@@ -460,13 +460,13 @@ void KeyframeBackend::AlignRoadPair(MappedFrame* mapped) {
                                 normal_guess, expected, alignment_options);
   const double shadow_brightness = options_.road_alignment_shadow_brightness;
   if (!alignment.ok && on_road_mask && shadow_brightness > 0.0) {
-    const cv::Mat* prev_clear = prev.shadow_free_road.Get(shadow_brightness);
-    const cv::Mat* cur_clear = cur.shadow_free_road.Get(shadow_brightness);
-    if (prev_clear != nullptr || cur_clear != nullptr) {
-      alignment = AlignRoadPlaneOrSearchAll(
-          prev.image, cur.image, prev_clear != nullptr ? *prev_clear : prev.road_mask,
-          cur_clear != nullptr ? *cur_clear : cur.road_mask, camera_, cur_from_prev, normal_guess,
-          expected, alignment_options);
+    ShadowFreeRoad& prev_road = prev.shadow_free_road;
+    ShadowFreeRoad& cur_road = cur.shadow_free_road;
+    if (prev_road.HasShadows(shadow_brightness) || cur_road.HasShadows(shadow_brightness)) {
+      alignment =
+          AlignRoadPlaneOrSearchAll(prev.image, cur.image, prev_road.Road(shadow_brightness),
+                                    cur_road.Road(shadow_brightness), camera_, cur_from_prev,
+                                    normal_guess, expected, alignment_options);
     }
   }
   if (!alignment.ok) return;

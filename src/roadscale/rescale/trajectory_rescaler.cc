@@ -294,13 +294,10 @@ double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_m
   const double brightness = options_.alignment_shadow_brightness;
   if (!alignment.ok && brightness > 0.0) {
     // The whole road found no plane: once more without the moving objects' shadows.
-    const cv::Mat* prev_clear = prev_shadow_free_road_.Get(brightness);
-    const cv::Mat* cur_clear = shadow_free_road->Get(brightness);
-    if (prev_clear != nullptr || cur_clear != nullptr) {
-      alignment =
-          AlignRoadPlane(prev_image_, image, prev_clear != nullptr ? *prev_clear : prev_road_mask_,
-                         cur_clear != nullptr ? *cur_clear : road_mask, camera_, b_from_a,
-                         normal_guess, expected, options_.alignment);
+    if (prev_shadow_free_road_.HasShadows(brightness) || shadow_free_road->HasShadows(brightness)) {
+      alignment = AlignRoadPlane(prev_image_, image, prev_shadow_free_road_.Road(brightness),
+                                 shadow_free_road->Road(brightness), camera_, b_from_a,
+                                 normal_guess, expected, options_.alignment);
     }
   }
   if (!alignment.ok) return none;

@@ -121,12 +121,16 @@ ShadowFreeRoad::ShadowFreeRoad(const cv::Mat& image, const cv::Mat& road_mask,
                                const cv::Mat& dynamic_mask)
     : image_(image), road_mask_(road_mask), dynamic_mask_(dynamic_mask) {}
 
-const cv::Mat* ShadowFreeRoad::Get(double max_relative_brightness) {
+bool ShadowFreeRoad::HasShadows(double max_relative_brightness) {
   if (!without_shadows_) {
     without_shadows_ =
         RoadWithoutMovingShadows(image_, road_mask_, dynamic_mask_, max_relative_brightness);
   }
-  return without_shadows_->empty() ? nullptr : &*without_shadows_;
+  return !without_shadows_->empty();
+}
+
+const cv::Mat& ShadowFreeRoad::Road(double max_relative_brightness) {
+  return HasShadows(max_relative_brightness) ? *without_shadows_ : road_mask_;
 }
 
 }  // namespace roadscale

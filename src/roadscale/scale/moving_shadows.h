@@ -37,9 +37,11 @@ class ShadowFreeRoad {
   // Keeps the Mats' headers (the pixels are shared, not copied): they must not change after.
   ShadowFreeRoad(const cv::Mat& image, const cv::Mat& road_mask, const cv::Mat& dynamic_mask);
 
-  // RoadWithoutMovingShadows at `max_relative_brightness` (the same on every call), or
-  // nullptr where that takes no road pixel.
-  const cv::Mat* Get(double max_relative_brightness);
+  // Whether RoadWithoutMovingShadows at `max_relative_brightness` (the same on every call)
+  // takes any road pixel.
+  bool HasShadows(double max_relative_brightness);
+  // The road mask less those shadows; the road mask itself where there are none.
+  const cv::Mat& Road(double max_relative_brightness);
 
  private:
   cv::Mat image_;

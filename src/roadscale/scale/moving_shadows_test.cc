@@ -99,18 +99,19 @@ TEST(RoadWithoutMovingShadows, IsTheRoadLessTheShadowsOrEmptyWhereNoneIsTaken) {
   EXPECT_TRUE(RoadWithoutMovingShadows(street.image, street.road, cv::Mat(), 0.6).empty());
 }
 
-TEST(ShadowFreeRoad, WorksTheRoadOutOnceAndGivesNothingWhereNoShadowIsTaken) {
+TEST(ShadowFreeRoad, WorksTheRoadOutOnceAndIsTheRoadMaskWhereNoShadowIsTaken) {
   const Street street;
   ShadowFreeRoad with_car(street.image, street.road, street.car);
-  const cv::Mat* road = with_car.Get(0.6);
-  ASSERT_NE(road, nullptr);
-  EXPECT_EQ(cv::countNonZero(*road !=
+  ASSERT_TRUE(with_car.HasShadows(0.6));
+  const cv::Mat& road = with_car.Road(0.6);
+  EXPECT_EQ(cv::countNonZero(road !=
                              RoadWithoutMovingShadows(street.image, street.road, street.car, 0.6)),
             0);
-  EXPECT_EQ(with_car.Get(0.6), road);  // the same Mat, not worked out again
+  EXPECT_EQ(&with_car.Road(0.6), &road);  // the same Mat, not worked out again
   ShadowFreeRoad without_car(street.image, street.road, cv::Mat());
-  EXPECT_EQ(without_car.Get(0.6), nullptr);
-  EXPECT_EQ(ShadowFreeRoad().Get(0.6), nullptr);
+  EXPECT_FALSE(without_car.HasShadows(0.6));
+  EXPECT_EQ(without_car.Road(0.6).data, street.road.data);
+  EXPECT_FALSE(ShadowFreeRoad().HasShadows(0.6));
 }
 
 TEST(MovingObjectShadows, RefusesMasksOfAnotherSize) {
