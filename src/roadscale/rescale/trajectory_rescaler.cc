@@ -138,6 +138,7 @@ TrajectoryRescaler::TrajectoryRescaler(const PinholeCamera& camera, const Trajec
                    return scale;
                  }()),
       ratio_filter_(options.scale.filter),
+      held_choice_(options.scale.filter),
       tracker_(options.tracker) {
   options_.Check();
   if (external_.size() < 2) {
@@ -310,6 +311,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   const auto start = std::chrono::steady_clock::now();
   RescaledPose step;
   step.pose = pose;
+  step.duration_s = seconds;
   const Rigid3d b_from_a = StepMotion(external_, pose);
   step.external_length = b_from_a.translation().norm();
   step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
@@ -329,6 +331,7 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   step.num_tracks = static_cast<int>(ids.size());
 
   if (!(step.external_length > options_.stationary_fraction * reference_step_length_)) {
+    last_step_fixed_ = false;
     step.status = RescaleStatus::kStationary;
     step.scale_ms = MillisecondsSince(start);
     return step;
@@ -411,10 +414,13 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
     ratio_ = options_.scale.use_filter ? ratio_filter_.Add(step.raw_ratio) : step.raw_ratio;
     has_ratio_ = true;
     step.status = RescaleStatus::kOk;
+    const double speed = seconds > 0.0 ? step.raw_ratio * step.external_length / seconds : 0.0;
+    held_choice_.AddFixed(step.raw_ratio, speed, last_step_fixed_);
   } else {
     step.status = RescaleStatus::kHeld;
     step.detail = ScaleStatusName(step.estimate.status);
   }
+  last_step_fixed_ = step.status == RescaleStatus::kOk;
   step.scale_ms = MillisecondsSince(start);
   return step;
 }
@@ -424,6 +430,11 @@ RescaledPose TrajectoryRescaler::Emit(RescaledPose step) {
   const bool own_ratio =
       options_.step_own_ratio && step.status == RescaleStatus::kOk && std::isfinite(step.raw_ratio);
   step.ratio = step.status == RescaleStatus::kUnscaled ? 1.0 : own_ratio ? step.raw_ratio : ratio_;
+  if (step.status == RescaleStatus::kHeld && held_choice_.HoldsSpeed() && step.duration_s > 0.0 &&
+      step.external_length > 0.0 && std::isfinite(held_choice_.speed())) {
+    step.ratio = held_choice_.speed() * step.duration_s / step.external_length;
+    step.detail += ", the speed held";
+  }
   step.metric_length =
       step.status == RescaleStatus::kStationary ? 0.0 : step.ratio * step.external_length;
   const Eigen::Vector3d translation =

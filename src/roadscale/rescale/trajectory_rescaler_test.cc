@@ -256,6 +256,29 @@ TEST(TrajectoryRescaler, StationaryStepsStayZeroAndRoadlessStepsHoldTheLastRatio
   EXPECT_EQ(run.poses[12].status, RescaleStatus::kOk);
 }
 
+// A VO whose step lengths jump by 30 % from step to step (as LibVISO2-M's do) on a car at a
+// steady 10 m/s: the road fixes show the speed steadier than the ratio, so the steps without a
+// road keep the speed. Keeping the last ratio made them 0.71 and 1.33 m (checked with the
+// speed never held).
+TEST(TrajectoryRescaler, ForAVoWhoseStepLengthsJumpRoadlessStepsHoldTheSpeed) {
+  const FlatRoadRenderer renderer;
+  const std::vector<double> speeds(16, 1.0);
+  const Trajectory gt = Drive(speeds);
+  std::vector<double> vo_steps;
+  for (size_t k = 0; k < speeds.size(); ++k) vo_steps.push_back(0.5 * (k % 2 == 0 ? 0.7 : 1.3));
+  const Trajectory external = Drive(vo_steps);
+  std::vector<bool> blank(gt.size(), false);
+  blank[12] = blank[13] = true;
+  const RescaleRun run = Rescale(renderer, gt, external, AllFrames(gt.size()), blank);
+  ASSERT_EQ(run.poses.size(), gt.size());
+  for (size_t k = 1; k < 12; ++k) ASSERT_EQ(run.poses[k].status, RescaleStatus::kOk) << k;
+  for (size_t k : {12, 13, 14}) {
+    EXPECT_EQ(run.poses[k].status, RescaleStatus::kHeld) << k;
+    EXPECT_NE(run.poses[k].detail.find("the speed held"), std::string::npos) << k;
+    EXPECT_NEAR(run.poses[k].metric_length, 1.0, 0.05) << k;
+  }
+}
+
 // Steps of 1 m at 10 Hz: 10 m/s. A road plane that makes the car faster than max_speed is
 // not taken: below 10 m/s every step is held as too fast; at the default none is.
 TEST(TrajectoryRescaler, AStepFasterThanTheMaxSpeedIsHeld) {

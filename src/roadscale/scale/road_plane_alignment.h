@@ -91,8 +91,8 @@ struct RoadPlaneAlignmentOptions {
   // 0.5-1.3 degrees); the free planes of KITTI 00's right turn tilted 2.5-4.9 degrees and came
   // out 8-26 % short. But where the direction itself is poor (a creeping car in a jam) a true
   // road tilts as much: 2 degrees took rendered traffic_jam 2 from 1.084 to 1.309 in length,
-  // and helped KITTI and rescale only in part, so there is no limit by default
-  // (docs/benchmark-history.md, "The road alignment in turns").
+  // and helped KITTI only in part, so there is no limit by default (docs/benchmark-history.md,
+  // "The road alignment in turns"); `rescale` sets 2 degrees (TrajectoryRescalerOptions).
   double max_pitch_to_travel_deg = 0.0;
   // Nor ones farther ahead than this many camera heights (0: no limit): on real frames the
   // road's heights stay within 2 % up to about 30 m and drift high beyond
