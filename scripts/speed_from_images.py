@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""A stretch's step lengths, relative to each other, from its images alone, beside the ground
+truth's and a run's: which of the two speed profiles the images bear out.
+
+    scripts/speed_from_images.py SEQUENCE OUT FIRST STEPS
+
+With each frame's rotation and each step's direction of travel taken from the run
+(OUT/poses_kitti.txt; a run's rotations and directions agree with its images), a static point
+X_j seen along the ray r_jk from the camera centre C_k = l_1 d_1 + ... + l_k d_k satisfies
+r_jk x (X_j - C_k) = 0, linear in the points and the step lengths l. Solved over every corner
+KLT tracks through frames FIRST..FIRST+STEPS (there and back within 0.3 px), the smallest
+solution gives the step lengths up to one scale: no road, no camera height, no ground truth in
+them. Each equation is weighted by the inverse of the point's distance (an angle, not metres),
+and points whose misfit is over three times the median are dropped, twice (cars that move).
+
+Prints each step's share of the stretch for the images, the ground truth (OUT/gt_poses_kitti.txt)
+and the run, then the misfit to the images of each profile (the solution's own is the least; a
+profile the images bear out comes near it, a constant speed shows how far a wrong one lands).
+On a rendered drive the images' shares are the ground truth's to about 1 %; on KITTI 00's first
+frames they bear out the run and not the ground truth (docs/benchmark-history.md, "KITTI 00's
+first frames against its images").
+"""
+import argparse
+import os
+import sys
+
+import cv2
+import numpy as np
+
+
+def fail(message):
+    sys.exit(f"speed_from_images.py: {message}")
+
+
+def read_poses(path):
+    if not os.path.isfile(path):
+        fail(f"{path}: no such file")
+    return np.loadtxt(path, ndmin=2).reshape(-1, 3, 4)
+
+
+def read_camera(sequence):
+    path = os.path.join(sequence, "calib.txt")
+    if not os.path.isfile(path):
+        fail(f"{path}: no such file")
+    with open(path) as calib:
+        for line in calib:
+            if line.startswith("P0:"):
+                p = [float(v) for v in line.split()[1:]]
+                return p[0], p[2], p[6]
+    fail(f"{path}: no P0 row")
+
+
+def read_image(sequence, index):
+    path = os.path.join(sequence, "image_0", f"{index:06d}.png")
+    image = cv2.imread(path, cv2.IMREAD_GRAYSCALE)
+    if image is None:
+        fail(f"{path}: cannot read the image")
+    return image
+
+
+def track_corners(sequence, first, steps):
+    """Image positions (steps + 1, corners, 2) of the corners tracked through the stretch."""
+    klt = dict(winSize=(21, 21), maxLevel=4,
+               criteria=(cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 40, 0.01))
+    image = read_image(sequence, first)
+    height, width = image.shape
+    mask = np.zeros_like(image)
+    mask[10:height - 10, 10:width - 10] = 255
+    corners = cv2.goodFeaturesToTrack(image, 2000, 0.005, 6, mask=mask)
+    if corners is None:
+        fail(f"no corners in frame {first}")
+    positions = [corners[:, 0].copy()]
+    alive = np.ones(len(corners), bool)
+    for index in range(first + 1, first + steps + 1):
+        following = read_image(sequence, index)
+        ahead, found, _ = cv2.calcOpticalFlowPyrLK(image, following, corners, None, **klt)
+        back, found_back, _ = cv2.calcOpticalFlowPyrLK(following, image, ahead, None, **klt)
+        alive &= (found[:, 0] == 1) & (found_back[:, 0] == 1)
+        alive &= np.linalg.norm((back - corners)[:, 0], axis=1) < 0.3
+        inside = (ahead[:, 0, 0] > 3) & (ahead[:, 0, 0] < width - 3)
+        alive &= inside & (ahead[:, 0, 1] > 3) & (ahead[:, 0, 1] < height - 3)
+        positions.append(ahead[:, 0].copy())
+        image, corners = following, ahead
+    positions = np.array(positions)[:, alive]
+    # A corner that hardly moves is too far away to say anything about the lengths.
+    return positions[:, np.linalg.norm(positions[-1] - positions[0], axis=1) > 3.0]
+
+
+def rays_and_directions(positions, poses, first, camera):
+    """Unit rays (steps + 1, corners, 3) and step directions (steps, 3), both in the first
+    frame's orientation, from the run's rotations and positions."""
+    focal, cx, cy = camera
+    steps = positions.shape[0] - 1
+    first_rotation = poses[first, :, :3]
+    rays = np.zeros(positions.shape[:2] + (3,))
+    for k in range(steps + 1):
+        pixels = np.c_[(positions[k, :, 0] - cx) / focal, (positions[k, :, 1] - cy) / focal,
+                       np.ones(positions.shape[1])]
+        turned = pixels @ (first_rotation.T @ poses[first + k, :, :3]).T
+        rays[k] = turned / np.linalg.norm(turned, axis=1)[:, None]
+    travel = np.diff(poses[first:first + steps + 1, :, 3], axis=0) @ first_rotation
+    return rays, travel / np.linalg.norm(travel, axis=1)[:, None]
+
+
+def skew(v):
+    return np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+
+def corner_systems(rays, directions, weights):
+    """For each corner, the matrix M_j with l' M_j l its least misfit over X_j for lengths l."""
+    steps = directions.shape[0]
+    systems = []
+    for j in range(rays.shape[1]):
+        point_rows, length_rows = [], []
+        for k in range(steps + 1):
+            cross = skew(rays[k, j]) * weights[k, j]
+            lengths = np.zeros((3, steps))
+            lengths[:, :k] = -(cross @ directions[:k].T)
+            point_rows.append(cross)
+            length_rows.append(lengths)
+        a, b = np.vstack(point_rows), np.vstack(length_rows)
+        residual_maker = np.eye(len(a)) - a @ np.linalg.pinv(a)
+        systems.append(b.T @ residual_maker @ b)
+    return np.array(systems)
+
+
+def solve_lengths(systems):
+    _, vectors = np.linalg.eigh(systems.sum(axis=0))
+    lengths = vectors[:, 0]
+    return lengths * np.sign(lengths.sum())
+
+
+def misfits(systems, lengths):
+    unit = lengths / np.linalg.norm(lengths)
+    return np.sqrt(np.maximum(np.einsum("i,jik,k->j", unit, systems, unit), 0.0))
+
+
+def corner_distances(rays, directions, lengths):
+    """Each corner's distance from each camera, triangulated with the given lengths."""
+    centres = np.vstack([np.zeros(3), np.cumsum(lengths[:, None] * directions, axis=0)])
+    distances = np.zeros(rays.shape[:2])
+    for j in range(rays.shape[1]):
+        a = np.vstack([skew(rays[k, j]) for k in range(len(centres))])
+        b = np.concatenate([skew(rays[k, j]) @ centres[k] for k in range(len(centres))])
+        point = np.linalg.lstsq(a, b, rcond=None)[0]
+        distances[:, j] = np.linalg.norm(point - centres, axis=1)
+    return distances
+
+
+def image_lengths(rays, directions):
+    """The step lengths (mean 1) the images give, the corners kept and their systems."""
+    keep = np.ones(rays.shape[1], bool)
+    weights = np.ones(rays.shape[:2])
+    for _ in range(3):
+        systems = corner_systems(rays[:, keep], directions, weights[:, keep])
+        lengths = solve_lengths(systems)
+        misfit = misfits(systems, lengths)
+        outliers = np.where(keep)[0][misfit > 3 * np.median(misfit)]
+        keep[outliers] = False
+        scale = np.median(corner_distances(rays[:, keep], directions, lengths))
+        weights[:, keep] = scale / np.maximum(
+            corner_distances(rays[:, keep], directions, lengths), 0.1 * scale)
+    systems = corner_systems(rays[:, keep], directions, weights[:, keep])
+    lengths = solve_lengths(systems)
+    return lengths / lengths.mean(), systems
+
+
+def step_lengths(poses, first, steps):
+    return np.linalg.norm(np.diff(poses[first:first + steps + 1, :, 3], axis=0), axis=1)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("sequence", help="KITTI sequence folder (calib.txt, image_0/)")
+    parser.add_argument("out", help="a run's output folder (poses_kitti.txt, gt_poses_kitti.txt)")
+    parser.add_argument("first", type=int, help="first frame of the stretch")
+    parser.add_argument("steps", type=int, help="steps in the stretch (3 or more)")
+    args = parser.parse_args()
+    if args.steps < 3:
+        fail("STEPS must be 3 or more")
+    run = read_poses(os.path.join(args.out, "poses_kitti.txt"))
+    truth = read_poses(os.path.join(args.out, "gt_poses_kitti.txt"))
+    if args.first < 0 or args.first + args.steps >= min(len(run), len(truth)):
+        fail(f"frames {args.first}..{args.first + args.steps} are not all in the run "
+             f"({len(run)} poses)")
+    positions = track_corners(args.sequence, args.first, args.steps)
+    if positions.shape[1] < 20:
+        fail(f"{positions.shape[1]} corners tracked through the stretch; 20 or more needed")
+    rays, directions = rays_and_directions(positions, run, args.first,
+                                           read_camera(args.sequence))
+    images, systems = image_lengths(rays, directions)
+    profiles = {"images": images, "ground truth": step_lengths(truth, args.first, args.steps),
+                "run": step_lengths(run, args.first, args.steps),
+                "constant": np.ones(args.steps)}
+    print(f"frames {args.first}-{args.first + args.steps}, {len(systems)} corners")
+    print("each step's share of the stretch (mean 1):")
+    for name in ("images", "ground truth", "run"):
+        print(f"  {name:13s}" + " ".join(f"{v / profiles[name].mean():.3f}" for v in profiles[name]))
+    print("misfit to the images (root of the summed squares):")
+    for name, lengths in profiles.items():
+        print(f"  {name:13s}{np.sqrt(np.sum(misfits(systems, lengths) ** 2)):.4f}")
+
+
+if __name__ == "__main__":
+    main()
