@@ -99,7 +99,10 @@ def rays_and_directions(positions, poses, first, camera):
         turned = pixels @ (first_rotation.T @ poses[first + k, :, :3]).T
         rays[k] = turned / np.linalg.norm(turned, axis=1)[:, None]
     travel = np.diff(poses[first:first + steps + 1, :, 3], axis=0) @ first_rotation
-    return rays, travel / np.linalg.norm(travel, axis=1)[:, None]
+    lengths = np.linalg.norm(travel, axis=1)
+    if np.any(lengths < 1e-9):
+        fail(f"the run stands still at step {first + int(np.argmin(lengths))}: no direction")
+    return rays, travel / lengths[:, None]
 
 
 def skew(v):
