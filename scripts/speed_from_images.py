@@ -192,6 +192,10 @@ def main():
     rays, directions = rays_and_directions(positions, run, args.first,
                                            read_camera(args.sequence))
     images, systems = image_lengths(rays, directions)
+    if np.any(images <= 0.0):
+        fail(f"the images give a step of no or negative length in frames {args.first}-"
+             f"{args.first + args.steps}: they do not determine this stretch (too few static "
+             "corners, or motion the run's directions do not describe); try another FIRST")
     profiles = {"images": images, "ground truth": step_lengths(truth, args.first, args.steps),
                 "run": step_lengths(run, args.first, args.steps),
                 "constant": np.ones(args.steps)}
