@@ -3,6 +3,7 @@
 truth's and a run's: which of the two speed profiles the images bear out.
 
     scripts/speed_from_images.py SEQUENCE OUT FIRST STEPS
+    scripts/speed_from_images.py IMAGES OUT FIRST STEPS --camera CAMERA.yaml
 
 With each frame's rotation and each step's direction of travel taken from the run
 (OUT/poses_kitti.txt; a run's rotations and directions agree with its images), a static point
@@ -13,11 +14,15 @@ solution gives the step lengths up to one scale: no road, no camera height, no g
 them. Each equation is weighted by the inverse of the point's distance (an angle, not metres),
 and points whose misfit is over three times the median are dropped, twice (cars that move).
 
-Prints each step's share of the stretch for the images, the ground truth (OUT/gt_poses_kitti.txt)
-and the run, then the misfit to the images of each profile (the solution's own is the least; a
+Prints each step's share of the stretch for the images, the ground truth (OUT/gt_poses_kitti.txt,
+when the run had one) and the run, then the misfit to the images of each profile (the solution's own is the least; a
 profile the images bear out comes near it, a constant speed shows how far a wrong one lands).
-On a rendered drive the images' shares are the ground truth's to about 1 %; on KITTI 00's first
-frames they bear out the run and not the ground truth (docs/benchmark-history.md, "KITTI 00's
+A folder of images needs its camera (--camera: the YAML given to `roadscale run --images`).
+In dense traffic the corners on moving cars outnumber the static ones: on the shared traffic
+drive the images determine none of its 12-step stretches (a step of negative length, or a
+misfit no better than a constant speed's). On a rendered drive the images' shares are the
+ground truth's to about 1 %; on KITTI 00's first frames they bear out the run and not the
+ground truth (docs/benchmark-history.md, "KITTI 00's
 first frames against its images").
 """
 import argparse
@@ -38,10 +43,35 @@ def read_poses(path):
     return np.loadtxt(path, ndmin=2).reshape(-1, 3, 4)
 
 
-def read_camera(sequence):
-    path = os.path.join(sequence, "calib.txt")
+def frame_paths(frames, camera_yaml):
+    """The frames' image files in order: a KITTI sequence's image_0/, or a folder of images."""
+    folder = frames if camera_yaml else os.path.join(frames, "image_0")
+    if not os.path.isdir(folder):
+        fail(f"{folder}: no such folder")
+    paths = sorted(os.path.join(folder, name) for name in os.listdir(folder)
+                   if name.lower().endswith((".png", ".jpg", ".jpeg")))
+    if not paths:
+        fail(f"{folder}: no png or jpg images")
+    return paths
+
+
+def read_camera(frames, camera_yaml):
+    """fx, cx, cy: from the camera YAML's Camera block, else from the sequence's calib.txt."""
+    if camera_yaml:
+        if not os.path.isfile(camera_yaml):
+            fail(f"{camera_yaml}: no such file")
+        values = {}
+        with open(camera_yaml) as yaml:
+            for line in yaml:
+                key, _, value = line.split("#")[0].partition(":")
+                if key.strip() in ("fx", "cx", "cy") and value.strip():
+                    values[key.strip()] = float(value)
+        if len(values) < 3:
+            fail(f"{camera_yaml}: needs fx, cx and cy")
+        return values["fx"], values["cx"], values["cy"]
+    path = os.path.join(frames, "calib.txt")
     if not os.path.isfile(path):
-        fail(f"{path}: no such file")
+        fail(f"{path}: no such file (a folder of images needs --camera)")
     with open(path) as calib:
         for line in calib:
             if line.startswith("P0:"):
@@ -50,19 +80,31 @@ def read_camera(sequence):
     fail(f"{path}: no P0 row")
 
 
-def read_image(sequence, index):
-    path = os.path.join(sequence, "image_0", f"{index:06d}.png")
-    image = cv2.imread(path, cv2.IMREAD_GRAYSCALE)
+def read_image(paths, index):
+    image = cv2.imread(paths[index], cv2.IMREAD_GRAYSCALE)
     if image is None:
-        fail(f"{path}: cannot read the image")
+        fail(f"{paths[index]}: cannot read the image")
     return image
 
 
-def track_corners(sequence, first, steps):
+def first_frame_of_run(out):
+    """The frame the run began at (`--frames A:`), from the first row of OUT/frames.csv."""
+    path = os.path.join(out, "frames.csv")
+    if not os.path.isfile(path):
+        return 0
+    with open(path) as frames:
+        header, first_row = frames.readline(), frames.readline()
+    columns = header.strip().split(",")
+    if "index" not in columns or not first_row:
+        return 0
+    return int(first_row.split(",")[columns.index("index")])
+
+
+def track_corners(paths, first, steps):
     """Image positions (steps + 1, corners, 2) of the corners tracked through the stretch."""
     klt = dict(winSize=(21, 21), maxLevel=4,
                criteria=(cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 40, 0.01))
-    image = read_image(sequence, first)
+    image = read_image(paths, first)
     height, width = image.shape
     mask = np.zeros_like(image)
     mask[10:height - 10, 10:width - 10] = 255
@@ -72,7 +114,7 @@ def track_corners(sequence, first, steps):
     positions = [corners[:, 0].copy()]
     alive = np.ones(len(corners), bool)
     for index in range(first + 1, first + steps + 1):
-        following = read_image(sequence, index)
+        following = read_image(paths, index)
         ahead, found, _ = cv2.calcOpticalFlowPyrLK(image, following, corners, None, **klt)
         back, found_back, _ = cv2.calcOpticalFlowPyrLK(following, image, ahead, None, **klt)
         alive &= (found[:, 0] == 1) & (found_back[:, 0] == 1)
@@ -174,35 +216,45 @@ def step_lengths(poses, first, steps):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("sequence", help="KITTI sequence folder (calib.txt, image_0/)")
-    parser.add_argument("out", help="a run's output folder (poses_kitti.txt, gt_poses_kitti.txt)")
-    parser.add_argument("first", type=int, help="first frame of the stretch")
+    parser.add_argument("frames", help="KITTI sequence folder (calib.txt, image_0/), or a folder "
+                        "of images with --camera")
+    parser.add_argument("out", help="the run's output folder (poses_kitti.txt; "
+                        "gt_poses_kitti.txt when it had ground truth)")
+    parser.add_argument("first", type=int, help="first pose of the stretch (0 = the run's first "
+                        "frame, whatever its --frames)")
     parser.add_argument("steps", type=int, help="steps in the stretch (3 or more)")
+    parser.add_argument("--camera", help="camera YAML (Camera: fx, cx, cy) of a folder of images")
     args = parser.parse_args()
     if args.steps < 3:
         fail("STEPS must be 3 or more")
     run = read_poses(os.path.join(args.out, "poses_kitti.txt"))
-    truth = read_poses(os.path.join(args.out, "gt_poses_kitti.txt"))
-    if args.first < 0 or args.first + args.steps >= min(len(run), len(truth)):
-        fail(f"frames {args.first}..{args.first + args.steps} are not all in the run "
-             f"({len(run)} poses)")
-    positions = track_corners(args.sequence, args.first, args.steps)
+    truth_path = os.path.join(args.out, "gt_poses_kitti.txt")
+    truth = read_poses(truth_path) if os.path.isfile(truth_path) else None
+    # The run's pose k is image first_frame + k.
+    paths = frame_paths(args.frames, args.camera)[first_frame_of_run(args.out):]
+    last = args.first + args.steps
+    if args.first < 0 or last >= min(len(run), len(paths)):
+        fail(f"frames {args.first}..{last} are not all in the run ({len(run)} poses) and the "
+             f"images ({len(paths)} from the run's first)")
+    positions = track_corners(paths, args.first, args.steps)
     if positions.shape[1] < 20:
         fail(f"{positions.shape[1]} corners tracked through the stretch; 20 or more needed")
     rays, directions = rays_and_directions(positions, run, args.first,
-                                           read_camera(args.sequence))
+                                           read_camera(args.frames, args.camera))
     images, systems = image_lengths(rays, directions)
     if np.any(images <= 0.0):
-        fail(f"the images give a step of no or negative length in frames {args.first}-"
-             f"{args.first + args.steps}: they do not determine this stretch (too few static "
-             "corners, or motion the run's directions do not describe); try another FIRST")
-    profiles = {"images": images, "ground truth": step_lengths(truth, args.first, args.steps),
-                "run": step_lengths(run, args.first, args.steps),
-                "constant": np.ones(args.steps)}
-    print(f"frames {args.first}-{args.first + args.steps}, {len(systems)} corners")
+        fail(f"the images give a step of no or negative length in frames {args.first}-{last}: "
+             "they do not determine this stretch (too few static corners, or motion the run's "
+             "directions do not describe); try another FIRST")
+    profiles = {"images": images}
+    if truth is not None and last < len(truth):
+        profiles["ground truth"] = step_lengths(truth, args.first, args.steps)
+    profiles["run"] = step_lengths(run, args.first, args.steps)
+    print(f"frames {args.first}-{last}, {len(systems)} corners")
     print("each step's share of the stretch (mean 1):")
-    for name in ("images", "ground truth", "run"):
-        print(f"  {name:13s}" + " ".join(f"{v / profiles[name].mean():.3f}" for v in profiles[name]))
+    for name, lengths in profiles.items():
+        print(f"  {name:13s}" + " ".join(f"{v / lengths.mean():.3f}" for v in lengths))
+    profiles["constant"] = np.ones(args.steps)
     print("misfit to the images (root of the summed squares):")
     for name, lengths in profiles.items():
         print(f"  {name:13s}{np.sqrt(np.sum(misfits(systems, lengths) ** 2)):.4f}")

@@ -31,9 +31,9 @@ def main():
         run = script.read_poses(os.path.join(out, "poses_kitti.txt"))
         truth = script.step_lengths(script.read_poses(os.path.join(out, "gt_poses_kitti.txt")),
                                     0, steps)
-        positions = script.track_corners(sequence, 0, steps)
+        positions = script.track_corners(script.frame_paths(sequence, None), 0, steps)
         rays, directions = script.rays_and_directions(positions, run, 0,
-                                                      script.read_camera(sequence))
+                                                      script.read_camera(sequence, None))
         images, systems = script.image_lengths(rays, directions)
     error = np.max(np.abs(images - truth / truth.mean()))
     own, of_truth, of_constant = (np.sqrt(np.sum(script.misfits(systems, lengths) ** 2))
