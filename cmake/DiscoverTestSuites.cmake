@@ -25,4 +25,8 @@ foreach(line IN LISTS lines)
       " SKIP_RETURN_CODE 77 LABELS [==[${labels}]==])\n")
   endif()
 endforeach()
+# A listing that yields no suite would leave the program's tests out of CTest unnoticed.
+if(content STREQUAL "")
+  message(FATAL_ERROR "${TEST_EXECUTABLE} --gtest_list_tests listed no suite: ${listing}")
+endif()
 file(WRITE "${CTEST_FILE}" "${content}")

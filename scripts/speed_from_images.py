@@ -40,7 +40,13 @@ def fail(message):
 def read_poses(path):
     if not os.path.isfile(path):
         fail(f"{path}: no such file")
-    return np.loadtxt(path, ndmin=2).reshape(-1, 3, 4)
+    try:
+        rows = np.loadtxt(path, ndmin=2)
+    except ValueError as error:
+        fail(f"{path}: not KITTI pose rows ({error})")
+    if rows.shape[1] != 12:
+        fail(f"{path}: {rows.shape[1]} numbers a row where KITTI pose rows have 12")
+    return rows.reshape(-1, 3, 4)
 
 
 def frame_paths(frames, camera_yaml):
