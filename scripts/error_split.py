@@ -21,24 +21,9 @@ import json
 import math
 import os
 import subprocess
-import sys
 import tempfile
 
-
-def read_poses(path):
-    poses = []
-    if not os.path.isfile(path):
-        sys.exit(f"{path}: no such file (expected a `roadscale run` output folder)")
-    with open(path) as lines:
-        for number, line in enumerate(lines, 1):
-            values = line.split()
-            if not values:
-                continue
-            if len(values) != 12:
-                sys.exit(f"{path}:{number}: expected 12 numbers, got {len(values)}")
-            v = [float(x) for x in values]
-            poses.append([v[0:4], v[4:8], v[8:12], [0.0, 0.0, 0.0, 1.0]])
-    return poses
+from kitti_poses import fail, read_poses
 
 
 def multiply(a, b):
@@ -87,7 +72,7 @@ def evaluate(roadscale, gt_path, est_path):
         [roadscale, "eval", "--gt", gt_path, "--est", est_path, "--json"],
         capture_output=True, text=True)
     if result.returncode != 0:
-        sys.exit(f"{roadscale} eval failed: {result.stderr.strip()}")
+        fail(f"{roadscale} eval failed: {result.stderr.strip()}")
     metrics = json.loads(result.stdout)
     return metrics["kitti"]["t_err_pct"], metrics["ate_m"]["se3"]
 
@@ -100,7 +85,7 @@ def main():
     estimate = read_poses(os.path.join(args.out, "poses_kitti.txt"))
     truth = read_poses(os.path.join(args.out, "gt_poses_kitti.txt"))
     if len(estimate) != len(truth) or len(estimate) < 2:
-        sys.exit(f"{args.out}: {len(estimate)} estimated and {len(truth)} true poses; "
+        fail(f"{args.out}: {len(estimate)} estimated and {len(truth)} true poses; "
                  "expected the same number, at least 2")
     frames = range(1, len(estimate))
     direction_only = chain(with_length(step(estimate, i), length(step(truth, i))) for i in frames)

@@ -15,18 +15,12 @@ import argparse
 import csv
 import math
 import os
-import sys
+
+from kitti_poses import fail, read_poses
 
 
 def read_positions(path):
-    positions = []
-    with open(path) as poses:
-        for number, line in enumerate(poses, 1):
-            values = line.split()
-            if len(values) != 12:
-                sys.exit(f"{path}:{number}: expected 12 numbers, got {len(values)}")
-            positions.append((float(values[3]), float(values[7]), float(values[11])))
-    return positions
+    return [(pose[0][3], pose[1][3], pose[2][3]) for pose in read_poses(path)]
 
 
 def summary(errors):
@@ -50,12 +44,12 @@ def main():
     frames_path = os.path.join(args.out, "frames.csv")
     for path in (gt_path, frames_path):
         if not os.path.isfile(path):
-            sys.exit(f"{path}: missing (a run on an input with ground truth writes it)")
+            fail(f"{path}: missing (a run on an input with ground truth writes it)")
     truth = read_positions(gt_path)
     with open(frames_path, newline="") as frames:
         rows = list(csv.DictReader(frames))
     if len(rows) > len(truth):
-        sys.exit(f"{frames_path}: {len(rows)} frames but {len(truth)} ground-truth poses")
+        fail(f"{frames_path}: {len(rows)} frames but {len(truth)} ground-truth poses")
 
     raw, applied, late = [], [], []
     estimated_path = true_path = late_estimated_path = late_true_path = 0.0

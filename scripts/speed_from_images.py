@@ -27,26 +27,15 @@ first frames against its images").
 """
 import argparse
 import os
-import sys
 
 import cv2
 import numpy as np
 
-
-def fail(message):
-    sys.exit(f"speed_from_images.py: {message}")
+from kitti_poses import fail, read_poses
 
 
-def read_poses(path):
-    if not os.path.isfile(path):
-        fail(f"{path}: no such file")
-    try:
-        rows = np.loadtxt(path, ndmin=2)
-    except ValueError as error:
-        fail(f"{path}: not KITTI pose rows ({error})")
-    if rows.shape[1] != 12:
-        fail(f"{path}: {rows.shape[1]} numbers a row where KITTI pose rows have 12")
-    return rows.reshape(-1, 3, 4)
+def read_pose_array(path):
+    return np.array(read_poses(path))[:, :3, :]
 
 
 def frame_paths(frames, camera_yaml):
@@ -233,9 +222,9 @@ def main():
     args = parser.parse_args()
     if args.steps < 3:
         fail("STEPS must be 3 or more")
-    run = read_poses(os.path.join(args.out, "poses_kitti.txt"))
+    run = read_pose_array(os.path.join(args.out, "poses_kitti.txt"))
     truth_path = os.path.join(args.out, "gt_poses_kitti.txt")
-    truth = read_poses(truth_path) if os.path.isfile(truth_path) else None
+    truth = read_pose_array(truth_path) if os.path.isfile(truth_path) else None
     # The run's pose k is image first_frame + k.
     paths = frame_paths(args.frames, args.camera)[first_frame_of_run(args.out):]
     last = args.first + args.steps

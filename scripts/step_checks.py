@@ -24,9 +24,9 @@ import argparse
 import csv
 import math
 import os
-import sys
 
-from error_split import length, read_poses, step
+from error_split import length, step
+from kitti_poses import fail, read_poses
 
 
 def translation(pose):
@@ -47,14 +47,14 @@ def main():
     estimate = read_poses(os.path.join(args.out, "poses_kitti.txt"))
     truth = read_poses(os.path.join(args.out, "gt_poses_kitti.txt"))
     if len(estimate) != len(truth):
-        sys.exit(f"{args.out}: {len(estimate)} poses against {len(truth)} of the ground truth")
+        fail(f"{args.out}: {len(estimate)} poses against {len(truth)} of the ground truth")
     frames_csv = os.path.join(args.out, "frames.csv")
     if not os.path.isfile(frames_csv):
-        sys.exit(f"{frames_csv}: no such file")
+        fail(f"{frames_csv}: no such file")
     with open(frames_csv) as f:
         rows = list(csv.DictReader(f))
     if len(rows) != len(estimate):
-        sys.exit(f"{frames_csv}: {len(rows)} rows against {len(estimate)} poses")
+        fail(f"{frames_csv}: {len(rows)} rows against {len(estimate)} poses")
 
     errors = []
     true_lengths, estimated_lengths = [0.0], [0.0]

@@ -12,19 +12,12 @@ highways it was 0.65-0.75 before the keyframe back end's ground check
 """
 import argparse
 import math
-import sys
+
+from kitti_poses import fail, read_poses
 
 
 def read_rotations(path):
-    rotations = []
-    with open(path) as poses:
-        for number, line in enumerate(poses, 1):
-            values = line.split()
-            if len(values) != 12:
-                sys.exit(f"{path}:{number}: expected 12 numbers, got {len(values)}")
-            v = [float(x) for x in values]
-            rotations.append([[v[0], v[1], v[2]], [v[4], v[5], v[6]], [v[8], v[9], v[10]]])
-    return rotations
+    return [[row[0:3] for row in pose[0:3]] for pose in read_poses(path)]
 
 
 def step_yaw_deg(before, after):
@@ -41,11 +34,11 @@ def main():
     parser.add_argument("--segment", type=int, default=25, help="frames per segment")
     args = parser.parse_args()
     if args.segment < 1:
-        sys.exit("--segment must be at least 1")
+        fail("--segment must be at least 1")
     estimate = read_rotations(f"{args.out}/poses_kitti.txt")
     truth = read_rotations(f"{args.out}/gt_poses_kitti.txt")
     if len(estimate) != len(truth) or len(truth) < 2:
-        sys.exit(f"{args.out}: {len(estimate)} estimated and {len(truth)} true poses; "
+        fail(f"{args.out}: {len(estimate)} estimated and {len(truth)} true poses; "
                  "expected the same number, at least 2")
     est_steps = [step_yaw_deg(estimate[i - 1], estimate[i]) for i in range(1, len(truth))]
     gt_steps = [step_yaw_deg(truth[i - 1], truth[i]) for i in range(1, len(truth))]

@@ -15,6 +15,8 @@ import numpy as np
 
 def main():
     roadscale, root = sys.argv[1], sys.argv[2]
+    # As when the script runs on its own: its folder's modules (kitti_poses) importable.
+    sys.path.insert(0, os.path.join(root, "scripts"))
     spec = importlib.util.spec_from_file_location(
         "speed_from_images", os.path.join(root, "scripts", "speed_from_images.py"))
     script = importlib.util.module_from_spec(spec)
@@ -28,8 +30,8 @@ def main():
         subprocess.run([roadscale, "run", "--kitti", sequence, "--scale", "oracle", "--labels",
                         os.path.join(sequence, "semantic"), "--out", out],
                        check=True, stdout=subprocess.DEVNULL)
-        run = script.read_poses(os.path.join(out, "poses_kitti.txt"))
-        truth = script.step_lengths(script.read_poses(os.path.join(out, "gt_poses_kitti.txt")),
+        run = script.read_pose_array(os.path.join(out, "poses_kitti.txt"))
+        truth = script.step_lengths(script.read_pose_array(os.path.join(out, "gt_poses_kitti.txt")),
                                     0, steps)
         positions = script.track_corners(script.frame_paths(sequence, None), 0, steps)
         rays, directions = script.rays_and_directions(positions, run, 0,
