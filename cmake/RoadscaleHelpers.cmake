@@ -12,21 +12,26 @@ function(roadscale_set_compile_options target)
   endif()
 endfunction()
 
-# roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data] [PREFIX module.])
+# roadscale_add_test(NAME SOURCES a_test.cc b_test.cc [LABELS slow data] [PREFIX module.]
+#                    [READS_IMAGES])
 # One GoogleTest executable per module. Each suite becomes one CTest test (its name preceded by
 # PREFIX when given, so that `ctest -R module` selects a module's tests) that runs the suite's
-# tests in one process: a process loads OpenCV's image and video readers with 250 shared
-# libraries, 0.2 s on a 2-core machine (0.6 s with the sanitizers) for tests that mostly take
-# milliseconds. A program labelled slow gives each test its own CTest test instead, so that its
+# tests in one process: a process that loads OpenCV's image and video readers loads 250 shared
+# libraries, 0.2 s on a 2-core machine (0.6 s with the sanitizers), for tests that mostly take
+# milliseconds. READS_IMAGES links those readers, for tests that call cv::imread or cv::imwrite
+# themselves; the library reaches them through its codecs plugin (io/codecs_plugin.h). A program labelled slow gives each test its own CTest test instead, so that its
 # long tests run side by side. Without ROADSCALE_BUILD_SLOW_TESTS an executable labelled slow is
 # not built (the sanitizer build of CI runs `ctest -LE slow`, which would never run it).
 function(roadscale_add_test name)
-  cmake_parse_arguments(ARG "" "PREFIX" "SOURCES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "READS_IMAGES" "PREFIX" "SOURCES;LABELS" ${ARGN})
   if("slow" IN_LIST ARG_LABELS AND NOT ROADSCALE_BUILD_SLOW_TESTS)
     return()
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE roadscale roadscale_testing roadscale_test_main GTest::gtest)
+  if(ARG_READS_IMAGES)
+    target_link_libraries(${name} PRIVATE roadscale_opencv_codecs)
+  endif()
   roadscale_set_compile_options(${name})
   if("slow" IN_LIST ARG_LABELS)
     gtest_discover_tests(${name}

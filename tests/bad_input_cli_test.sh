@@ -126,6 +126,13 @@ if [[ "$mode" == "files" ]]; then
     expect_error 1 "secret\.txt: cannot open trajectory file: permission denied" \
       "${as_user[@]}" "$roadscale" eval --gt "$out/gt.txt" --est "$out/secret.txt"
   fi
+  # OpenCV's image readers are a plugin opened on the first image (io/codecs_plugin.h): a
+  # command that reads none runs without it, one that does names what is missing.
+  expect_ok env ROADSCALE_CODECS_PLUGIN="$out/no_codecs.so" "$roadscale" eval --gt "$out/gt.txt" \
+    --est "$out/gt.txt"
+  expect_error 1 "ROADSCALE_CODECS_PLUGIN=.*/no_codecs\.so: no such file \(roadscale's image codecs plugin\)" \
+    env ROADSCALE_CODECS_PLUGIN="$out/no_codecs.so" "$roadscale" run --kitti "$seq" \
+    --no-segmentation --scale oracle --out "$out/no_codecs_run"
   # A pipe is read once; a UTF-8 byte order mark is skipped.
   expect_ok "$roadscale" eval --gt "$out/gt.txt" --est <(cat "$out/gt.txt")
   grep -q "^Frames evaluated: 40$" "$out/stdout.txt" || fail "pipe: $(cat "$out/stdout.txt")"

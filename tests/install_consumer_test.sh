@@ -44,6 +44,12 @@ done
 for file in roadscaleConfig.cmake roadscaleConfigVersion.cmake roadscaleTargets.cmake; do
   expect_file "$libdir/cmake/roadscale/$file"
 done
+# OpenCV's image readers, which the library opens on first use (io/codecs_plugin.h). Staged
+# under DESTDIR it is not where the installed programs look, so they are pointed at it: the
+# runs below read every image through the installed plugin.
+codecs="$libdir/roadscale/libroadscale_codecs.so"
+expect_file "$codecs"
+export ROADSCALE_CODECS_PLUGIN="$codecs"
 roadscale="$stage$ROADSCALE_INSTALL_BINDIR/roadscale"
 [[ -x "$roadscale" ]] || fail "not installed: ${roadscale#"$stage"}"
 model="$datadir/roadscale/config/models/espnetv2_512x256.yaml"

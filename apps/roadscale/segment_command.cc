@@ -9,9 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "roadscale/io/frame_source.h"
+#include "roadscale/io/image_codecs.h"
 #include "roadscale/segmentation/cityscapes.h"
 #include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/util/error.h"
@@ -39,10 +38,10 @@ struct SegmentArguments {
   }();
 };
 
-void WriteImage(const fs::path& path, const cv::Mat& image) {
+void WriteImageFile(const fs::path& path, const cv::Mat& image) {
   bool written = false;
   try {
-    written = cv::imwrite(path.string(), image);
+    written = WriteImage(path.string(), image);
   } catch (const cv::Exception&) {
     written = false;
   }
@@ -102,9 +101,9 @@ void RunSegment(const SegmentArguments& arguments) {
   while (source->Next(&frame)) {
     const std::string name = fs::path(frame.path).stem().string();
     const SegmentationResult result = segmenter->Segment(frame.image, name);
-    WriteImage(out / "labels" / (name + ".png"), result.labels);
-    WriteImage(out / "overlays" / (name + ".png"),
-               OverlayTrainIds(frame.image, result.labels, arguments.overlay_weight));
+    WriteImageFile(out / "labels" / (name + ".png"), result.labels);
+    WriteImageFile(out / "overlays" / (name + ".png"),
+                   OverlayTrainIds(frame.image, result.labels, arguments.overlay_weight));
     ++frames;
     if (result.fresh) {
       ++fresh;

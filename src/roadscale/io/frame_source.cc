@@ -8,6 +8,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "roadscale/geometry/camera_height.h"
 #include "roadscale/io/image_file.h"
@@ -471,12 +472,12 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
   camera_ = ReadCameraForInput(options, "a video");
   if (!camera_.distortion.empty()) undistorter_.emplace(camera_.camera, camera_.distortion);
   color_ = options.color;
-  if (!capture_.open(path_) || !capture_.isOpened()) {
+  if (!capture_.Open(path_)) {
     ThrowFileError(path_, "cannot open video (unsupported container or codec, or not a video)");
   }
 
-  const int width = static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_WIDTH));
-  const int height = static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_HEIGHT));
+  const int width = static_cast<int>(capture_.Get(cv::CAP_PROP_FRAME_WIDTH));
+  const int height = static_cast<int>(capture_.Get(cv::CAP_PROP_FRAME_HEIGHT));
   if (width > 0 && height > 0 &&
       (width != camera_.camera.width || height != camera_.camera.height)) {
     ThrowFileError(path_, "video frames are " + SizeText(width, height) + " but " +
@@ -484,7 +485,7 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
                               SizeText(camera_.camera.width, camera_.camera.height));
   }
 
-  const double fps = capture_.get(cv::CAP_PROP_FPS);
+  const double fps = capture_.Get(cv::CAP_PROP_FPS);
   if (std::isfinite(fps) && fps > 0.0) {
     fps_ = fps;
   } else {
@@ -494,7 +495,7 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
                      " Hz where it has no timestamps");
   }
 
-  const double count = capture_.get(cv::CAP_PROP_FRAME_COUNT);
+  const double count = capture_.Get(cv::CAP_PROP_FRAME_COUNT);
   range_ = options.frames;
   if (std::isfinite(count) && count > 0.0) {
     const auto [begin, end] =
@@ -509,20 +510,20 @@ VideoFile::VideoFile(const FrameSourceOptions& options) : path_(options.input) {
 
 bool VideoFile::Next(Frame* frame) {
   while (next_index_ < range_.begin) {
-    if (!capture_.grab()) {
+    if (!capture_.Grab()) {
       ThrowFileError(path_, "the video ended at frame " + std::to_string(next_index_) +
                                 ", before the first selected frame " +
                                 std::to_string(range_.begin));
     }
     ++next_index_;
   }
-  if (next_index_ >= range_.end || !capture_.grab()) return false;
+  if (next_index_ >= range_.end || !capture_.Grab()) return false;
   const size_t index = next_index_++;
   const std::string frame_path = path_ + "#" + std::to_string(index);
 
   // The container's time is the truth when the backend provides it (variable frame rate);
   // some backends report 0 or stale values, so accept it only while it increases.
-  const double msec = capture_.get(cv::CAP_PROP_POS_MSEC);
+  const double msec = capture_.Get(cv::CAP_PROP_POS_MSEC);
   double timestamp = static_cast<double>(index) / fps_;
   if (std::isfinite(msec) && msec >= 0.0 &&
       (index == range_.begin || msec / 1000.0 > last_timestamp_)) {
@@ -530,7 +531,7 @@ bool VideoFile::Next(Frame* frame) {
   }
 
   cv::Mat decoded;
-  if (!capture_.retrieve(decoded) || decoded.empty()) {
+  if (!capture_.Retrieve(&decoded) || decoded.empty()) {
     ThrowFileError(frame_path, "cannot decode video frame");
   }
   if (decoded.cols != camera_.camera.width || decoded.rows != camera_.camera.height) {

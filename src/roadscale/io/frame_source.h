@@ -8,9 +8,9 @@
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "roadscale/io/camera_setup.h"
+#include "roadscale/io/image_codecs.h"
 #include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/trajectory_io.h"
 
@@ -225,10 +225,10 @@ class ImageFolder : public ImageFileSequence {
   size_t total_images_ = 0;
 };
 
-// A video file read with cv::VideoCapture, plus a camera YAML. Timestamps come from the
-// container (CAP_PROP_POS_MSEC) when it has them, else index / fps (CAP_PROP_FPS), else
-// index / kDefaultFrameRateHz. A range's first frames are skipped by decoding, not seeking,
-// so that Frame::index is exact.
+// A video file read with cv::VideoCapture (VideoReader), plus a camera YAML. Timestamps come from
+// the container (CAP_PROP_POS_MSEC) when it has them, else index / fps (CAP_PROP_FPS), else index /
+// kDefaultFrameRateHz. A range's first frames are skipped by decoding, not seeking, so that
+// Frame::index is exact.
 class VideoFile : public FrameSource {
  public:
   // Uses options.input (the video), camera_yaml (required), color, h0 and frames. Throws
@@ -244,7 +244,7 @@ class VideoFile : public FrameSource {
  private:
   std::string path_;
   CameraSetup camera_;
-  cv::VideoCapture capture_;
+  VideoReader capture_;
   FrameRange range_;
   size_t size_ = 0;
   size_t next_index_ = 0;  // index of the frame the next grab() returns

@@ -1,7 +1,6 @@
 #include "roadscale/io/image_file.h"
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "roadscale/io/image_codecs.h"
 #include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
 #include "roadscale/util/input_file.h"
@@ -13,8 +12,7 @@ cv::Mat ReadImageFile(const std::string& path, int flags, const std::string& wha
   if (bytes.empty()) ThrowFileError(path, "cannot decode " + what + " (the file is empty)");
   const std::string problem = PngStructureProblem(bytes);
   if (!problem.empty()) ThrowFileError(path, "cannot decode " + what + " (" + problem + ")");
-  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-  cv::Mat image = cv::imdecode(buffer, flags);
+  cv::Mat image = DecodeImage(bytes, flags);
   if (image.empty()) {
     ThrowFileError(path, "cannot decode " + what + " (corrupt, truncated or not an image)");
   }

@@ -7,11 +7,11 @@
 #include <iostream>
 #include <optional>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <unistd.h>
 
 #include "roadscale/io/camera_setup.h"
+#include "roadscale/io/image_codecs.h"
 #include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
@@ -33,7 +33,7 @@ void MakeDirectory(const fs::path& path) {
 void WritePng(const fs::path& path, const cv::Mat& image) {
   bool ok = false;
   try {
-    ok = cv::imwrite(path.string(), image);
+    ok = WriteImage(path.string(), image);
   } catch (const cv::Exception& e) {
     ThrowFileError(path.string(), std::string("cannot write image: ") + e.what());
   }

@@ -1,0 +1,88 @@
+#include "roadscale/io/image_codecs.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include <dlfcn.h>
+
+#include "roadscale/io/codecs_plugin.h"
+#include "roadscale/util/error.h"
+
+namespace roadscale {
+namespace {
+
+const RoadscaleCodecs* OpenPlugin() {
+  // A plugin named by the user is the only one tried: another found instead would hide the
+  // mistake.
+  const char* chosen = std::getenv("ROADSCALE_CODECS_PLUGIN");
+  const std::vector<std::string> candidates =
+      chosen != nullptr && *chosen != '\0'
+          ? std::vector<std::string>{chosen}
+          : std::vector<std::string>{ROADSCALE_CODECS_BUILD_PATH, ROADSCALE_CODECS_INSTALL_PATH};
+  std::string looked;
+  for (const std::string& path : candidates) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+      looked += (looked.empty() ? "" : ", ") + path;
+      continue;
+    }
+    void* plugin = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (plugin == nullptr) {
+      throw Error("cannot load roadscale's image codecs plugin " + path + ": " + dlerror());
+    }
+    const auto entry = reinterpret_cast<CodecsEntryPoint>(dlsym(plugin, kCodecsEntryPoint));
+    if (entry == nullptr) {
+      throw Error(path + ": not roadscale's image codecs plugin (no " +
+                  std::string(kCodecsEntryPoint) + ")");
+    }
+    return entry();
+  }
+  if (chosen != nullptr && *chosen != '\0') {
+    throw Error(std::string("ROADSCALE_CODECS_PLUGIN=") + chosen +
+                ": no such file (roadscale's image codecs plugin)");
+  }
+  throw Error("roadscale's image codecs plugin is missing (looked for " + looked +
+              "; set ROADSCALE_CODECS_PLUGIN to its path)");
+}
+
+// Opened once, on first use, and kept: OpenCV's codecs stay loaded to the process's end.
+const RoadscaleCodecs& Codecs() {
+  static const RoadscaleCodecs* const codecs = OpenPlugin();
+  return *codecs;
+}
+
+}  // namespace
+
+cv::Mat DecodeImage(const std::string& bytes, int flags) {
+  cv::Mat image;
+  Codecs().decode(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), flags,
+                  &image);
+  return image;
+}
+
+bool WriteImage(const std::string& path, const cv::Mat& image) {
+  return Codecs().write(path.c_str(), &image);
+}
+
+VideoReader::~VideoReader() {
+  if (video_ != nullptr) Codecs().video_close(video_);
+}
+
+bool VideoReader::Open(const std::string& path) {
+  if (video_ != nullptr) Codecs().video_close(video_);
+  video_ = Codecs().video_open(path.c_str());
+  return video_ != nullptr;
+}
+
+double VideoReader::Get(int property) const {
+  return video_ != nullptr ? Codecs().video_get(video_, property) : 0.0;
+}
+
+bool VideoReader::Grab() { return video_ != nullptr && Codecs().video_grab(video_); }
+
+bool VideoReader::Retrieve(cv::Mat* image) {
+  return video_ != nullptr && Codecs().video_retrieve(video_, image);
+}
+
+}  // namespace roadscale
