@@ -16,11 +16,12 @@ endfunction()
 #                    [READS_IMAGES])
 # One GoogleTest executable per module. Each suite becomes one CTest test (its name preceded by
 # PREFIX when given, so that `ctest -R module` selects a module's tests) that runs the suite's
-# tests in one process: a process that loads OpenCV's image and video readers loads 250 shared
+# tests in one process: a process that loads OpenCV's image and video readers loads 263 shared
 # libraries, 0.2 s on a 2-core machine (0.6 s with the sanitizers), for tests that mostly take
 # milliseconds. READS_IMAGES links those readers, for tests that call cv::imread or cv::imwrite
-# themselves; the library reaches them through its codecs plugin (io/codecs_plugin.h). A program labelled slow gives each test its own CTest test instead, so that its
-# long tests run side by side. Without ROADSCALE_BUILD_SLOW_TESTS an executable labelled slow is
+# themselves; the library reaches them through its codecs plugin (io/codecs_plugin.h). A
+# program labelled slow gives each test its own CTest test instead, so that its long tests run
+# side by side. Without ROADSCALE_BUILD_SLOW_TESTS an executable labelled slow is
 # not built (the sanitizer build of CI runs `ctest -LE slow`, which would never run it).
 function(roadscale_add_test name)
   cmake_parse_arguments(ARG "READS_IMAGES" "PREFIX" "SOURCES;LABELS" ${ARGN})

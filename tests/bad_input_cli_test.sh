@@ -133,6 +133,10 @@ if [[ "$mode" == "files" ]]; then
   expect_error 1 "ROADSCALE_CODECS_PLUGIN=.*/no_codecs\.so: no such file \(roadscale's image codecs plugin\)" \
     env ROADSCALE_CODECS_PLUGIN="$out/no_codecs.so" "$roadscale" run --kitti "$seq" \
     --no-segmentation --scale oracle --out "$out/no_codecs_run"
+  : >"$out/empty_codecs.so"
+  expect_error 1 "cannot load roadscale's image codecs plugin .*/empty_codecs\.so: " \
+    env ROADSCALE_CODECS_PLUGIN="$out/empty_codecs.so" "$roadscale" run --kitti "$seq" \
+    --no-segmentation --scale oracle --out "$out/empty_codecs_run"
   # A pipe is read once; a UTF-8 byte order mark is skipped.
   expect_ok "$roadscale" eval --gt "$out/gt.txt" --est <(cat "$out/gt.txt")
   grep -q "^Frames evaluated: 40$" "$out/stdout.txt" || fail "pipe: $(cat "$out/stdout.txt")"

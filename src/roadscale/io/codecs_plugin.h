@@ -5,9 +5,10 @@
 #include <opencv2/core.hpp>
 
 // The table of functions the codecs plugin (codecs_plugin.cc, a shared object of its own)
-// exports through kCodecsEntryPoint: OpenCV's image and video readers, which load about 220
-// shared libraries (GDAL, GDCM, GStreamer, FFmpeg...), 0.2 s of every process's start on a
-// 2-core machine, whether or not it reads an image. image_codecs.h opens the plugin on the
+// exports through kCodecsEntryPoint: OpenCV's image and video readers, which load about 200
+// shared libraries (GDAL, GDCM, GStreamer, FFmpeg...; 263 in the command with them, 57
+// without), 0.2 s of every process's start on a 2-core machine, whether or not it reads an
+// image. image_codecs.h opens the plugin on the
 // first image read or written (docs/benchmark-history.md, "What a process pays before main:
 // OpenCV's image and video readers").
 struct RoadscaleCodecs {

@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <vector>
 
 #include <dlfcn.h>
 
@@ -12,37 +11,40 @@
 namespace roadscale {
 namespace {
 
+const RoadscaleCodecs* OpenPluginAt(const std::string& path) {
+  void* plugin = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (plugin == nullptr) {
+    throw Error("cannot load roadscale's image codecs plugin " + path + ": " + dlerror());
+  }
+  const auto entry = reinterpret_cast<CodecsEntryPoint>(dlsym(plugin, kCodecsEntryPoint));
+  if (entry == nullptr) {
+    throw Error(path + ": not roadscale's image codecs plugin (no " +
+                std::string(kCodecsEntryPoint) + ")");
+  }
+  return entry();
+}
+
+bool Exists(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
+}
+
 const RoadscaleCodecs* OpenPlugin() {
   // A plugin named by the user is the only one tried: another found instead would hide the
   // mistake.
   const char* chosen = std::getenv("ROADSCALE_CODECS_PLUGIN");
-  const std::vector<std::string> candidates =
-      chosen != nullptr && *chosen != '\0'
-          ? std::vector<std::string>{chosen}
-          : std::vector<std::string>{ROADSCALE_CODECS_BUILD_PATH, ROADSCALE_CODECS_INSTALL_PATH};
-  std::string looked;
-  for (const std::string& path : candidates) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
-      looked += (looked.empty() ? "" : ", ") + path;
-      continue;
-    }
-    void* plugin = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (plugin == nullptr) {
-      throw Error("cannot load roadscale's image codecs plugin " + path + ": " + dlerror());
-    }
-    const auto entry = reinterpret_cast<CodecsEntryPoint>(dlsym(plugin, kCodecsEntryPoint));
-    if (entry == nullptr) {
-      throw Error(path + ": not roadscale's image codecs plugin (no " +
-                  std::string(kCodecsEntryPoint) + ")");
-    }
-    return entry();
-  }
   if (chosen != nullptr && *chosen != '\0') {
-    throw Error(std::string("ROADSCALE_CODECS_PLUGIN=") + chosen +
-                ": no such file (roadscale's image codecs plugin)");
+    if (!Exists(chosen)) {
+      throw Error(std::string("ROADSCALE_CODECS_PLUGIN=") + chosen +
+                  ": no such file (roadscale's image codecs plugin)");
+    }
+    return OpenPluginAt(chosen);
   }
-  throw Error("roadscale's image codecs plugin is missing (looked for " + looked +
+  for (const char* path : {ROADSCALE_CODECS_BUILD_PATH, ROADSCALE_CODECS_INSTALL_PATH}) {
+    if (Exists(path)) return OpenPluginAt(path);
+  }
+  throw Error(std::string("roadscale's image codecs plugin is missing (looked for ") +
+              ROADSCALE_CODECS_BUILD_PATH + ", " + ROADSCALE_CODECS_INSTALL_PATH +
               "; set ROADSCALE_CODECS_PLUGIN to its path)");
 }
 
