@@ -37,8 +37,13 @@ cmp -s "$seq/image_0/000003.png" "$out/c/sequences/07/image_0/000003.png" &&
   fail "another seed gave the same frame"
 [[ -f "$out/c/poses/07.txt" ]] || fail "--sequence 07 not used"
 
-"$roadscale" synth --scene "$source_dir/config/synth/twisty_hills.yaml" --frames 2 --out "$out/d"
-[[ -s "$out/d/sequences/00/image_0/000001.png" ]] || fail "scene file run wrote no frames"
+# Every scene file the project ships renders.
+for scene in "$source_dir"/config/synth/*.yaml; do
+  name="$(basename "$scene" .yaml)"
+  "$roadscale" synth --scene "$scene" --frames 2 --out "$out/$name" >/dev/null ||
+    fail "$scene did not render"
+  [[ -s "$out/$name/sequences/00/image_0/000001.png" ]] || fail "$scene: no frames written"
+done
 
 # Bad input: one line on stderr, exit code 1.
 expect_error() {
