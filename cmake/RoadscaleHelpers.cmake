@@ -21,8 +21,7 @@ endfunction()
 # milliseconds. READS_IMAGES links those readers, for tests that call cv::imread or cv::imwrite
 # themselves; the library reaches them through its codecs plugin (io/codecs_plugin.h). A
 # program labelled slow gives each test its own CTest test instead, so that its long tests run
-# side by side, and a COST that starts it before the fast suites (tests/CMakeLists.txt says
-# why). Without ROADSCALE_BUILD_SLOW_TESTS an executable labelled slow is
+# side by side. Without ROADSCALE_BUILD_SLOW_TESTS an executable labelled slow is
 # not built (the sanitizer build of CI runs `ctest -LE slow`, which would never run it).
 function(roadscale_add_test name)
   cmake_parse_arguments(ARG "READS_IMAGES" "PREFIX" "SOURCES;LABELS" ${ARGN})
@@ -38,7 +37,7 @@ function(roadscale_add_test name)
   if("slow" IN_LIST ARG_LABELS)
     gtest_discover_tests(${name}
       TEST_PREFIX "${ARG_PREFIX}"
-      PROPERTIES LABELS "${ARG_LABELS}" SKIP_RETURN_CODE 77 COST 10
+      PROPERTIES LABELS "${ARG_LABELS}" SKIP_RETURN_CODE 77
       DISCOVERY_TIMEOUT 60)
     return()
   endif()
