@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "roadscale/io/frame_source.h"
-#include "roadscale/io/image_codecs.h"
+#include "roadscale/io/image_file.h"
 #include "roadscale/segmentation/cityscapes.h"
 #include "roadscale/segmentation/make_segmenter.h"
 #include "roadscale/util/error.h"
@@ -37,16 +37,6 @@ struct SegmentArguments {
     return options;
   }();
 };
-
-void WriteImageFile(const fs::path& path, const cv::Mat& image) {
-  bool written = false;
-  try {
-    written = WriteImage(path.string(), image);
-  } catch (const cv::Exception&) {
-    written = false;
-  }
-  if (!written) ThrowFileError(path.string(), "cannot write this image");
-}
 
 void RunSegment(const SegmentArguments& arguments) {
   if (arguments.segmentation.model == "none") {

@@ -1,5 +1,11 @@
 #include "roadscale/io/image_file.h"
 
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <unistd.h>
+
 #include "roadscale/io/image_codecs.h"
 #include "roadscale/io/png_structure.h"
 #include "roadscale/util/error.h"
@@ -17,6 +23,24 @@ cv::Mat ReadImageFile(const std::string& path, int flags, const std::string& wha
     ThrowFileError(path, "cannot decode " + what + " (corrupt, truncated or not an image)");
   }
   return image;
+}
+
+void WriteImageFile(const std::string& path, const cv::Mat& image) {
+  // Opened here first: where it cannot be, OpenCV would print a warning of its own.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) ThrowFileError(path, std::string("cannot write image: ") + std::strerror(errno));
+  ::close(fd);
+  bool written = false;
+  try {
+    written = WriteImage(path, image);
+  } catch (const cv::Exception&) {
+    // OpenCV's message spans lines and names its own source file; the path says enough.
+    written = false;
+  }
+  if (!written) {
+    ::unlink(path.c_str());  // no empty or cut file where an image was expected
+    ThrowFileError(path, "cannot write image");
+  }
 }
 
 }  // namespace roadscale

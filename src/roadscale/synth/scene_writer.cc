@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "roadscale/io/camera_setup.h"
-#include "roadscale/io/image_codecs.h"
+#include "roadscale/io/image_file.h"
 #include "roadscale/io/image_undistorter.h"
 #include "roadscale/io/kitti_calib.h"
 #include "roadscale/io/trajectory_io.h"
@@ -28,16 +28,6 @@ void MakeDirectory(const fs::path& path) {
   std::error_code error;
   fs::create_directories(path, error);
   if (error) ThrowFileError(path.string(), "cannot create folder: " + error.message());
-}
-
-void WritePng(const fs::path& path, const cv::Mat& image) {
-  bool ok = false;
-  try {
-    ok = WriteImage(path.string(), image);
-  } catch (const cv::Exception& e) {
-    ThrowFileError(path.string(), std::string("cannot write image: ") + e.what());
-  }
-  if (!ok) ThrowFileError(path.string(), "cannot write image");
 }
 
 std::string FrameName(int index) {
@@ -111,14 +101,16 @@ void WriteSyntheticSequence(SyntheticScene& scene, const SceneWriterOptions& opt
   for (int i = 0; i < frames; ++i) {
     const SynthFrame frame = scene.Render(i, options.colour);
     const std::string name = FrameName(i);
-    WritePng(sequence / "image_0" / name, through_lens(frame.images.grey));
-    if (options.colour) WritePng(sequence / "image_2" / name, through_lens(frame.images.colour));
-    WritePng(sequence / "semantic" / name, frame.images.labels);
+    WriteImageFile(sequence / "image_0" / name, through_lens(frame.images.grey));
+    if (options.colour)
+      WriteImageFile(sequence / "image_2" / name, through_lens(frame.images.colour));
+    WriteImageFile(sequence / "semantic" / name, frame.images.labels);
     if (network_labels) {
-      WritePng(sequence / "semantic_network" / name, network_labels->Next(frame.images.labels));
+      WriteImageFile(sequence / "semantic_network" / name,
+                     network_labels->Next(frame.images.labels));
     }
-    WritePng(sequence / "depth" / name, frame.images.depth);
-    WritePng(sequence / "moving" / name, frame.images.moving);
+    WriteImageFile(sequence / "depth" / name, frame.images.depth);
+    WriteImageFile(sequence / "moving" / name, frame.images.moving);
     char line[160];
     std::snprintf(line, sizeof(line), "%e\n", frame.time);
     times.stream() << line;
