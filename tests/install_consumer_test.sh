@@ -49,9 +49,18 @@ done
 # runs below read every image through the installed plugin.
 codecs="$libdir/roadscale/libroadscale_codecs.so"
 expect_file "$codecs"
-export ROADSCALE_CODECS_PLUGIN="$codecs"
 roadscale="$stage$ROADSCALE_INSTALL_BINDIR/roadscale"
 [[ -x "$roadscale" ]] || fail "not installed: ${roadscale#"$stage"}"
+# Without the variable an installed program looks in its prefix only, never in the build
+# tree, whose plugin may be of another version by then.
+LD_DEBUG=files "$roadscale" synth --frames 1 --out "$scratch/one" >/dev/null 2>"$scratch/loads.txt" || true
+! grep -q "file=$build/.*libroadscale_codecs" "$scratch/loads.txt" ||
+  fail "the installed roadscale opened the build tree's image codecs plugin"
+grep -q "file=$ROADSCALE_INSTALL_LIBDIR/roadscale/libroadscale_codecs.so" "$scratch/loads.txt" ||
+  grep -q "plugin is missing (looked for $ROADSCALE_INSTALL_LIBDIR/roadscale/libroadscale_codecs.so;" \
+    "$scratch/loads.txt" ||
+  fail "the installed roadscale did not look for its plugin in its prefix: $(grep -v '^ *[0-9]*:' "$scratch/loads.txt")"
+export ROADSCALE_CODECS_PLUGIN="$codecs"
 model="$datadir/roadscale/config/models/espnetv2_512x256.yaml"
 expect_file "$datadir/roadscale/config/kitti.yaml"
 expect_file "$model"

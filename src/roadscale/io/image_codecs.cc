@@ -1,9 +1,13 @@
 #include "roadscale/io/image_codecs.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include <dlfcn.h>
+#include <link.h>
 
 #include "roadscale/io/codecs_plugin.h"
 #include "roadscale/util/error.h"
@@ -29,6 +33,41 @@ bool Exists(const std::string& path) {
   return std::filesystem::exists(path, error);
 }
 
+// The file of the program or shared library (a Python module) this code is linked into.
+std::string ObjectOfThisCode() {
+  struct Search {
+    uintptr_t address = 0;
+    std::string object;
+  } search{reinterpret_cast<uintptr_t>(&ObjectOfThisCode), ""};
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* data) {
+        auto* search = static_cast<Search*>(data);
+        for (int i = 0; i < info->dlpi_phnum; ++i) {
+          const ElfW(Phdr)& segment = info->dlpi_phdr[i];
+          const uintptr_t start = info->dlpi_addr + segment.p_vaddr;
+          if (segment.p_type == PT_LOAD && search->address >= start &&
+              search->address < start + segment.p_memsz) {
+            // The program itself has no name here; the kernel knows its file.
+            search->object = info->dlpi_name[0] != '\0' ? info->dlpi_name : "/proc/self/exe";
+            return 1;
+          }
+        }
+        return 0;
+      },
+      &search);
+  return search.object;
+}
+
+bool LinkedIntoTheBuildTree() {
+  std::error_code error;
+  const std::filesystem::path object = std::filesystem::canonical(ObjectOfThisCode(), error);
+  if (error) return false;
+  const std::filesystem::path tree = std::filesystem::canonical(ROADSCALE_BUILD_DIR, error);
+  if (error) return false;
+  const auto [end, unused] = std::mismatch(tree.begin(), tree.end(), object.begin(), object.end());
+  return end == tree.end();
+}
+
 const RoadscaleCodecs* OpenPlugin() {
   // A plugin named by the user is the only one tried: another found instead would hide the
   // mistake.
@@ -40,11 +79,13 @@ const RoadscaleCodecs* OpenPlugin() {
     }
     return OpenPluginAt(chosen);
   }
-  for (const char* path : {ROADSCALE_CODECS_BUILD_PATH, ROADSCALE_CODECS_INSTALL_PATH}) {
-    if (Exists(path)) return OpenPluginAt(path);
-  }
-  throw Error(std::string("roadscale's image codecs plugin is missing (looked for ") +
-              ROADSCALE_CODECS_BUILD_PATH + ", " + ROADSCALE_CODECS_INSTALL_PATH +
+  // Only a program of the build tree takes the build's plugin: an installed program (or one
+  // built against the installed libraries) that took it would load whatever the tree holds
+  // today, perhaps of another version than its own.
+  const char* path =
+      LinkedIntoTheBuildTree() ? ROADSCALE_CODECS_BUILD_PATH : ROADSCALE_CODECS_INSTALL_PATH;
+  if (Exists(path)) return OpenPluginAt(path);
+  throw Error(std::string("roadscale's image codecs plugin is missing (looked for ") + path +
               "; set ROADSCALE_CODECS_PLUGIN to its path)");
 }
 

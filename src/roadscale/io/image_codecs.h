@@ -8,9 +8,10 @@ namespace roadscale {
 
 // OpenCV's image decoding and writing and its video reader, from the codecs plugin, which is
 // opened on the first call (codecs_plugin.h says why). The plugin is the file
-// $ROADSCALE_CODECS_PLUGIN names when it is set, else the one the build made if it is still
-// there, else the one `cmake --install` put in LIBDIR/roadscale. Each function throws Error
-// when the plugin cannot be opened.
+// $ROADSCALE_CODECS_PLUGIN names when it is set, else, for code linked into a program (or
+// module) inside the build tree, the one the build made, and for any other the one `cmake
+// --install` put in LIBDIR/roadscale. Each function throws Error when the plugin cannot be
+// opened.
 
 // cv::imdecode of the file's bytes with cv::IMREAD_* `flags`; empty when they are no image.
 cv::Mat DecodeImage(const std::string& bytes, int flags);
