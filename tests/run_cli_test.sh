@@ -167,6 +167,9 @@ if [[ "$mode" == "road" ]]; then
   cat "$out/log.txt"
   expect_line "$out/log.txt" "^Scale:  road \(h0 = 1.65"
   expect_line "$out/run/frames.csv" "^index,.*,road_raw_scale,road_scale,.*,road_plane_h$"
+  # A reader that looks columns up by name must find each once.
+  duplicate="$(head -1 "$out/run/frames.csv" | tr ',' '\n' | sort | uniq -d)"
+  [[ -z "$duplicate" ]] || fail "frames.csv names a column twice: $duplicate"
   [[ "$(grep -c '"ok",' "$out/run/frames.csv")" -ge 25 ]] || fail "fewer than 25 road-scaled steps"
   tail -1 "$out/run/poses_kitti.txt" | awk '{ if ($12 < 20 || $12 > 30) exit 1 }' ||
     fail "last pose is not 20-30 m ahead: $(tail -1 "$out/run/poses_kitti.txt")"

@@ -73,7 +73,7 @@ void RegisterDemoCommand(CLI::App& app) {
       "demo",
       "Render a synthetic driving sequence (exact ground truth and label images), run the full "
       "pipeline on it with segmentation from the labels, evaluate it and write the HTML "
-      "report. Needs no data: about a minute from a fresh clone.");
+      "report. Needs no data: about half a minute on a 2-core machine.");
   command->add_option("--out", arguments->out, "Output folder (data/ and run/ inside)")
       ->capture_default_str();
   command->add_option("--frames", arguments->frames, "Number of frames to render (10 Hz)")

@@ -329,8 +329,9 @@ void RegisterRescaleCommand(CLI::App& app) {
                     "Triangulate with the input's motion as it is, without refining it on the "
                     "tracks (default: refined; the output keeps the input's motion either way)");
   command->add_option("--config", arguments->config,
-                      "Run config YAML whose Scale: block sets the road-plane scale's options "
-                      "(config/kitti.yaml lists them; the other blocks are not used here; "
+                      "Run config YAML whose Scale: block and Mapping: road_alignment* keys set "
+                      "the road-plane scale's and the road alignment's options "
+                      "(config/kitti.yaml lists them; the other keys are not used here; "
                       "default: the defaults of config/kitti.yaml)");
   command
       ->add_option("--out", arguments->out,

@@ -180,20 +180,23 @@ void RegisterRunCommand(CLI::App& app) {
       "runs (a crash, Ctrl-C or SIGTERM leaves the frames before it intact; Ctrl-C and SIGTERM "
       "stop after the frames in flight and exit 1): OUT/poses_kitti.txt (one "
       "world_from_cam row per input frame, the first frame is the world), OUT/poses_tum.txt "
-      "(the same with timestamps), OUT/frames.csv (per frame: status, tracks, inliers, points "
-      "after each scale stage, plane n and h, raw and filtered scale, ms per stage), "
+      "(the same with timestamps), OUT/frames.csv (per frame: status, tracks, inliers, ms per "
+      "stage, then the keyframe back end's keyframe, localisation, map scale, road points and "
+      "bundle adjustment, or with Mapping.mode frame_to_frame the points after each scale stage, "
+      "plane n and h, raw and filtered scale; docs/usage.md lists them), "
       "OUT/config_used.yaml (every option; --config it to repeat the run); at the end "
       "OUT/report.html and, with ground truth, OUT/metrics.json and OUT/gt_poses_kitti.txt.");
   command->add_option("--kitti", arguments->kitti,
                       "KITTI odometry sequence folder (.../sequences/NN; ground truth from "
                       "../../poses/NN.txt when present)");
   command->add_option("--images", arguments->images,
-                      "Folder of images (png/jpg, sorted by name); needs --camera");
+                      "Folder of images (png/jpg, in natural order: img9 before img10; numbered "
+                      "frames without gaps); needs --camera");
   command->add_option("--video", arguments->video, "Video file; needs --camera");
   command->add_option("--camera", arguments->camera,
                       "Camera YAML (Camera: fx fy cx cy width height h0), for --images/--video");
   command->add_option("--config", arguments->config,
-                      "Config YAML with Camera:, Frontend:, Scale:, Segmentation: blocks "
+                      "Config YAML with Camera:, Frontend:, Scale:, Segmentation:, Mapping: blocks "
                       "(config/kitti.yaml lists every key with the paper's defaults); command-line "
                       "options override it (default: none, the paper's defaults)");
   command->add_option("--model", arguments->model,

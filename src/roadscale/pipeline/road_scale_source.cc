@@ -11,7 +11,7 @@ RoadScaleSource::RoadScaleSource(const PinholeCamera& camera, const ScaleEstimat
     : estimator_(camera, options) {}
 
 std::string RoadScaleSource::DiagnosticsCsvHeader() const {
-  return "road_raw_scale,road_scale,road_tracks,road_triangulated,road_preselected,"
+  return "road_raw_scale,road_scale,road_inlier_tracks,road_triangulated,road_preselected,"
          "road_after_vote,road_after_model_check,road_ransac_inliers,road_inlier_ratio,"
          "road_plane_nx,road_plane_ny,road_plane_nz,road_plane_h";
 }
