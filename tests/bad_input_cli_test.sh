@@ -378,6 +378,9 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   expect_error 1 "^roadscale: error: .*--gt" "$roadscale" eval --gt
   expect_error 1 "^roadscale: error: .*--bogus" "$roadscale" run --bogus 1 --out "$out/r"
   expect_error 1 "^roadscale: error: .*--est.* is required" "$roadscale" eval --gt "$out/gt.txt"
+  # A mistyped option is named, not the required one it leaves missing.
+  expect_error 1 "^roadscale: error: The following arguments were not expected: .*--outt " \
+    "$roadscale" run --kitti "$seq" --outt "$out/r"
   echo "bad inputs (files): $cases cases passed"
   exit 0
 fi

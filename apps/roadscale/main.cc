@@ -84,7 +84,14 @@ int main(int argc, char** argv) {
     return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
     // One line and status 1, as for every other error (CLI11's own exit codes are 100+).
-    std::cerr << "roadscale: error: " << e.what() << " (see roadscale --help)\n";
+    // CLI11 checks the required options before it reports the words it did not recognise,
+    // so a mistyped option would read as a missing one: the unrecognised words come first.
+    const std::vector<std::string> unrecognised = app.remaining(/*recurse=*/true);
+    const std::string message =
+        dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && !unrecognised.empty()
+            ? CLI::ExtrasError(unrecognised).what()
+            : e.what();
+    std::cerr << "roadscale: error: " << message << " (see roadscale --help)\n";
     return 1;
   } catch (const roadscale::Error& e) {
     std::cerr << "roadscale: error: " << e.what() << '\n';
