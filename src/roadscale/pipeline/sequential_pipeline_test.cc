@@ -1,9 +1,14 @@
 #include "roadscale/pipeline/sequential_pipeline.h"
 
 #include <algorithm>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "roadscale/mapping/keyframe_backend.h"
+#include "roadscale/pipeline/road_scale_source.h"
 
 namespace roadscale {
 namespace {
@@ -15,6 +20,26 @@ TEST(SequentialPipeline, FrameRecordCsvHasOneFieldPerHeaderColumn) {
     return std::count(text.begin(), text.end(), ',');
   };
   EXPECT_EQ(count(FrameRecordCsvHeader()), count(FormatFrameRecordCsv(record)));
+}
+
+// frames.csv is the per-frame columns, then the scale source's or the back end's: a reader
+// that looks columns up by name (Python's csv.DictReader) must find each once.
+TEST(SequentialPipeline, FramesCsvNamesEachColumnOnce) {
+  const auto duplicates = [](const std::string& header) {
+    std::vector<std::string> names;
+    std::stringstream stream(header);
+    for (std::string name; std::getline(stream, name, ',');) names.push_back(name);
+    std::sort(names.begin(), names.end());
+    std::vector<std::string> twice;
+    for (size_t i = 1; i < names.size(); ++i) {
+      if (names[i] == names[i - 1]) twice.push_back(names[i]);
+    }
+    return twice;
+  };
+  const PinholeCamera camera{718.856, 718.856, 607.19, 185.22, 1241, 376};
+  const RoadScaleSource road(camera, ScaleEstimatorOptions());
+  EXPECT_TRUE(duplicates(FrameRecordCsvHeader() + "," + road.DiagnosticsCsvHeader()).empty());
+  EXPECT_TRUE(duplicates(FrameRecordCsvHeader() + "," + MappedFrameCsvHeader()).empty());
 }
 
 TEST(SequentialPipeline, RecordsTheRoadPixelsAndTheTracksOnTheRoad) {
