@@ -232,6 +232,7 @@ std::vector<Block> Blocks(RunConfig& c) {
                &c.pipeline.segmentation_schedule.carry.road_ransac_threshold_px),
         Scalar("carry_dynamic_growth_px_per_frame",
                &c.pipeline.segmentation_schedule.carry.dynamic_growth_px_per_frame),
+        Scalar("carry_road_on_motion", &c.pipeline.segmentation_schedule.carry.road_on_motion),
         Scalar("carry_dynamic_in_place", &c.pipeline.segmentation_schedule.carry.dynamic_in_place),
         Scalar("every", &g.every), Scalar("dnn_threads", &g.dnn_threads),
         Scalar("workers", &g.workers), Scalar("use_dynamic_mask", &g.masks.use_dynamic_mask),

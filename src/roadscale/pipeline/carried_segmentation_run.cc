@@ -38,7 +38,8 @@ class CarriedFrontend {
                   const PipelineOptions& options, const PinholeCamera& camera)
       : pipeline_(pipeline),
         service_(service),
-        carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames),
+        carrier_(options.segmentation_schedule.carry, options.segmentation_schedule.latency_frames,
+                 camera.K()),
         schedule_(camera, options.segmentation_schedule.keyframes),
         carry_in_place_(options.segmentation_schedule.carry.dynamic_in_place),
         min_carried_road_share_(options.segmentation_schedule.min_carried_road_share) {}
@@ -53,6 +54,7 @@ class CarriedFrontend {
     out.tracked = pipeline_.Track(input, [&](const std::vector<Correspondence>& correspondences) {
       return carrier_.Masks(index, correspondences, take);
     });
+    carrier_.AddMotion(out.tracked.frontend.motion);
     out.road_step = carrier_.last_step();
     out.tracked.dynamic_mask = carrier_.last_dynamic_mask();
     if (carry_in_place_) out.dynamic_mask = carrier_.last_dynamic_mask();

@@ -1,5 +1,6 @@
 #include "roadscale/pipeline/frontend_mask_carrier.h"
 
+#include "roadscale/scale/road_plane.h"
 #include "roadscale/util/error.h"
 
 namespace roadscale {
@@ -18,8 +19,9 @@ cv::Mat StaticMaskOf(const cv::Mat& dynamic_mask) {
 
 }  // namespace
 
-FrontendMaskCarrier::FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames)
-    : options_(options), latency_frames_(latency_frames) {
+FrontendMaskCarrier::FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames,
+                                         const Eigen::Matrix3d& intrinsics)
+    : options_(options), latency_frames_(latency_frames), intrinsics_(intrinsics) {
   options_.Check();
   CheckOption(latency_frames_ >= 1, "segmentation.latency_frames", "must be >= 1");
 }
@@ -46,7 +48,7 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
     prev.push_back(c.prev);
     cur.push_back(c.cur);
   }
-  const std::optional<Eigen::Matrix3d> step = FitRoadHomography(prev, cur, road_, options_);
+  const std::optional<Eigen::Matrix3d> step = FitRoadStep(prev, cur);
   carry_failed_ = !step.has_value();
   // Without a measurement the road is taken to move as in the frame before.
   if (step) last_step_ = *step;
@@ -84,6 +86,34 @@ FrontendMasks FrontendMaskCarrier::Masks(int frame_index,
     masks.segmented_dynamic_mask = anchor_.dynamic_mask;
   }
   return masks;
+}
+
+void FrontendMaskCarrier::AddMotion(const TwoViewMotion& motion) {
+  switch (motion.status) {
+    case MotionStatus::kOk:
+      predicted_rotation_ = motion.rotation;
+      predicted_direction_ = motion.direction;
+      break;
+    case MotionStatus::kStationary:
+    case MotionStatus::kPureRotation:
+      predicted_rotation_ = motion.rotation;
+      break;
+    default:
+      break;
+  }
+}
+
+std::optional<Eigen::Matrix3d> FrontendMaskCarrier::FitRoadStep(
+    const std::vector<Eigen::Vector2d>& prev, const std::vector<Eigen::Vector2d>& cur) const {
+  if (options_.road_on_motion && predicted_direction_) {
+    const std::optional<Eigen::Vector3d> normal = RoadNormalFromMotion(
+        MakeRigid3d(predicted_rotation_, -predicted_rotation_ * *predicted_direction_));
+    if (normal) {
+      return FitRoadHomographyOnMotion(prev, cur, road_, intrinsics_, predicted_rotation_,
+                                       *predicted_direction_, *normal, options_);
+    }
+  }
+  return FitRoadHomography(prev, cur, road_, options_);
 }
 
 void FrontendMaskCarrier::MeasureCarriedRoadShare() {

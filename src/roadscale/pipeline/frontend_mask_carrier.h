@@ -2,6 +2,7 @@
 
 #include <deque>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -21,7 +22,10 @@ class FrontendMaskCarrier {
  public:
   using TakeFresh = std::function<SegmentationResult(int frame_index)>;
 
-  FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames);
+  // `intrinsics`: the camera's K, for the road's homography on the motion
+  // (MaskCarryOptions::road_on_motion).
+  FrontendMaskCarrier(const MaskCarryOptions& options, int latency_frames,
+                      const Eigen::Matrix3d& intrinsics);
 
   // The masks of `frame_index` once its tracks are followed into it (a FrontendMaskProvider's
   // work). `take_fresh` waits for a segmented frame's result: the first frame's, and each
@@ -31,6 +35,10 @@ class FrontendMaskCarrier {
 
   // The schedule picked `frame_index` (the frame just tracked) for the network.
   void AddSegmented(int frame_index) { pending_.push_back(frame_index); }
+
+  // The motion the frontend measured into the frame just tracked: the prediction of the next
+  // frame's, on which its road homography is fitted (MaskCarryOptions::road_on_motion).
+  void AddMotion(const TwoViewMotion& motion);
 
   // The last frame's road homography cur_from_prev (the previous one's when it could not be
   // measured, identity in the first frame), and whether it could not.
@@ -46,6 +54,10 @@ class FrontendMaskCarrier {
 
  private:
   void MeasureCarriedRoadShare();
+  // The road's homography from the last frame to this one, fitted to the tracks `prev` ->
+  // `cur` on the carried road mask.
+  std::optional<Eigen::Matrix3d> FitRoadStep(const std::vector<Eigen::Vector2d>& prev,
+                                             const std::vector<Eigen::Vector2d>& cur) const;
 
   MaskCarryOptions options_;
   int latency_frames_;
@@ -61,6 +73,11 @@ class FrontendMaskCarrier {
   Eigen::Matrix3d last_step_ = Eigen::Matrix3d::Identity();
   bool carry_failed_ = false;
   double carried_road_share_ = 1.0;
+  Eigen::Matrix3d intrinsics_;
+  // The last rotation measured and the last direction of travel measured (a car that stops in
+  // a jam keeps its camera's direction of travel when it moves again).
+  Eigen::Matrix3d predicted_rotation_ = Eigen::Matrix3d::Identity();
+  std::optional<Eigen::Vector3d> predicted_direction_;
 };
 
 }  // namespace roadscale

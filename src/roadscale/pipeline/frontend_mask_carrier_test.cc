@@ -26,7 +26,8 @@ TEST(FrontendMaskCarrier, HandsOutASegmentedFramesOwnMaskWhenItFallsDue) {
     taken.push_back(frame);
     return ResultWithCarAt(frame == 0 ? car_in_frame0 : car_in_frame1);
   };
-  FrontendMaskCarrier carrier(MaskCarryOptions{}, /*latency_frames=*/2);
+  FrontendMaskCarrier carrier(MaskCarryOptions{}, /*latency_frames=*/2,
+                              Eigen::Matrix3d::Identity());
   const std::vector<Correspondence> none;
 
   FrontendMasks masks = carrier.Masks(0, none, take);
@@ -66,7 +67,8 @@ TEST(FrontendMaskCarrier, MeasuresTheShareOfTheRoadStillCarried) {
     }
     return out;
   };
-  FrontendMaskCarrier carrier(MaskCarryOptions{}, /*latency_frames=*/2);
+  FrontendMaskCarrier carrier(MaskCarryOptions{}, /*latency_frames=*/2,
+                              Eigen::Matrix3d::Identity());
   carrier.Masks(0, {}, take);
   EXPECT_DOUBLE_EQ(carrier.carried_road_share(), 1.0);
   carrier.Masks(1, moved_down(0.0), take);
@@ -90,7 +92,8 @@ TEST(FrontendMaskCarrier, MeasuresTheShareOfTheRoadStillCarried) {
     result.dynamic_mask(cv::Rect(20, 50, 20, 20)).setTo(255);
     return result;
   };
-  FrontendMaskCarrier with_car(MaskCarryOptions{}, /*latency_frames=*/2);
+  FrontendMaskCarrier with_car(MaskCarryOptions{}, /*latency_frames=*/2,
+                               Eigen::Matrix3d::Identity());
   with_car.Masks(0, {}, take_car_on_road);
   with_car.Masks(1, moved_down(0.0), take_car_on_road);
   EXPECT_NEAR(with_car.carried_road_share(), 0.9, 1e-9);

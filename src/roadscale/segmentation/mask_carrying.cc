@@ -1,6 +1,7 @@
 #include "roadscale/segmentation/mask_carrying.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -61,6 +62,94 @@ void CarryPiece(const cv::Mat& piece, const cv::Rect& rect, const Eigen::Matrix3
   (*out)(destination) |= warped;
 }
 
+// The tracks whose previous pixel lies on the road mask.
+void RoadTracks(const std::vector<Eigen::Vector2d>& prev, const std::vector<Eigen::Vector2d>& cur,
+                const cv::Mat& prev_road_mask, std::vector<Eigen::Vector2d>* road_prev,
+                std::vector<Eigen::Vector2d>* road_cur) {
+  if (prev.size() != cur.size()) throw Error("road homography: one current pixel per track");
+  for (size_t i = 0; i < prev.size(); ++i) {
+    if (!PixelOnMask(prev_road_mask, prev[i])) continue;
+    road_prev->push_back(prev[i]);
+    road_cur->push_back(cur[i]);
+  }
+}
+
+// K exp([omega]x) R (I - s d n^T) K^-1 of FitRoadHomographyOnMotion.
+struct PlaneMotionModel {
+  Eigen::Matrix3d intrinsics;
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d direction;
+  Eigen::Vector3d normal;
+
+  // params: s, then the rotation correction's angle-axis vector.
+  Eigen::Matrix3d Homography(const Eigen::Vector4d& params) const {
+    const Eigen::Vector3d omega = params.tail<3>();
+    const double angle = omega.norm();
+    const Eigen::Matrix3d correction =
+        angle > 0.0 ? Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix()
+                    : Eigen::Matrix3d::Identity();
+    return intrinsics * correction * rotation *
+           (Eigen::Matrix3d::Identity() - params(0) * direction * normal.transpose()) *
+           intrinsics.inverse();
+  }
+};
+
+Eigen::Vector2d Misfit(const Eigen::Matrix3d& homography, const Eigen::Vector2d& prev,
+                       const Eigen::Vector2d& cur) {
+  const Eigen::Vector3d mapped = homography * prev.homogeneous();
+  if (!(mapped.z() > 1e-9)) return Eigen::Vector2d::Constant(1e9);
+  return mapped.hnormalized() - cur;
+}
+
+int CountWithin(const Eigen::Matrix3d& homography, const std::vector<Eigen::Vector2d>& prev,
+                const std::vector<Eigen::Vector2d>& cur, double threshold,
+                std::vector<int>* inliers) {
+  if (inliers != nullptr) inliers->clear();
+  int count = 0;
+  for (size_t i = 0; i < prev.size(); ++i) {
+    if (Misfit(homography, prev[i], cur[i]).norm() >= threshold) continue;
+    ++count;
+    if (inliers != nullptr) inliers->push_back(static_cast<int>(i));
+  }
+  return count;
+}
+
+// Gauss-Newton on the model's four parameters over the tracks `use`, each row weighted by
+// Huber's loss at `huber_px`; numeric derivatives (the model is four numbers).
+Eigen::Vector4d Refine(const PlaneMotionModel& model, Eigen::Vector4d params,
+                       const std::vector<Eigen::Vector2d>& prev,
+                       const std::vector<Eigen::Vector2d>& cur, const std::vector<int>& use,
+                       double huber_px) {
+  constexpr int kIterations = 5;
+  constexpr double kStep = 1e-6;
+  for (int iteration = 0; iteration < kIterations; ++iteration) {
+    const Eigen::Matrix3d homography = model.Homography(params);
+    std::array<Eigen::Matrix3d, 4> moved;
+    for (int k = 0; k < 4; ++k) {
+      Eigen::Vector4d shifted = params;
+      shifted(k) += kStep;
+      moved[k] = model.Homography(shifted);
+    }
+    Eigen::Matrix4d normal_matrix = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d gradient = Eigen::Vector4d::Zero();
+    for (int i : use) {
+      const Eigen::Vector2d misfit = Misfit(homography, prev[i], cur[i]);
+      const double norm = misfit.norm();
+      const double weight = norm <= huber_px ? 1.0 : huber_px / norm;
+      Eigen::Matrix<double, 2, 4> jacobian;
+      for (int k = 0; k < 4; ++k) {
+        jacobian.col(k) = (Misfit(moved[k], prev[i], cur[i]) - misfit) / kStep;
+      }
+      normal_matrix += weight * jacobian.transpose() * jacobian;
+      gradient += weight * jacobian.transpose() * misfit;
+    }
+    const Eigen::Vector4d update = normal_matrix.ldlt().solve(-gradient);
+    if (!update.allFinite()) break;
+    params += update;
+  }
+  return params;
+}
+
 }  // namespace
 
 void MaskCarryOptions::Check() const {
@@ -76,13 +165,13 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
                                                  const std::vector<Eigen::Vector2d>& cur,
                                                  const cv::Mat& prev_road_mask,
                                                  const MaskCarryOptions& options) {
-  if (prev.size() != cur.size()) throw Error("road homography: one current pixel per track");
   if (prev_road_mask.empty()) return std::nullopt;
+  std::vector<Eigen::Vector2d> road_prev, road_cur;
+  RoadTracks(prev, cur, prev_road_mask, &road_prev, &road_cur);
   std::vector<cv::Point2f> from, to;
-  for (size_t i = 0; i < prev.size(); ++i) {
-    if (!PixelOnMask(prev_road_mask, prev[i])) continue;
-    from.emplace_back(static_cast<float>(prev[i].x()), static_cast<float>(prev[i].y()));
-    to.emplace_back(static_cast<float>(cur[i].x()), static_cast<float>(cur[i].y()));
+  for (size_t i = 0; i < road_prev.size(); ++i) {
+    from.emplace_back(static_cast<float>(road_prev[i].x()), static_cast<float>(road_prev[i].y()));
+    to.emplace_back(static_cast<float>(road_cur[i].x()), static_cast<float>(road_cur[i].y()));
   }
   if (static_cast<int>(from.size()) < options.road_min_tracks) return std::nullopt;
   // OpenCV's RANSAC draws from a generator with a fixed seed: the same tracks give the same fit.
@@ -96,6 +185,54 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
   }
   if (!out.allFinite() || std::abs(out(2, 2)) < 1e-12) return std::nullopt;
   return out / out(2, 2);
+}
+
+std::optional<Eigen::Matrix3d> FitRoadHomographyOnMotion(
+    const std::vector<Eigen::Vector2d>& prev, const std::vector<Eigen::Vector2d>& cur,
+    const cv::Mat& prev_road_mask, const Eigen::Matrix3d& intrinsics,
+    const Eigen::Matrix3d& rotation, const Eigen::Vector3d& direction,
+    const Eigen::Vector3d& normal, const MaskCarryOptions& options) {
+  if (prev_road_mask.empty()) return std::nullopt;
+  std::vector<Eigen::Vector2d> road_prev, road_cur;
+  RoadTracks(prev, cur, prev_road_mask, &road_prev, &road_cur);
+  if (static_cast<int>(road_prev.size()) < options.road_min_tracks) return std::nullopt;
+  const PlaneMotionModel model{intrinsics, rotation, direction, normal};
+  const Eigen::Matrix3d inverse_intrinsics = intrinsics.inverse();
+  // Each track's own s with the predicted rotation (a line's least squares: the mapped pixel
+  // is the projection of a - s b), then the s that the most tracks agree with, within a band
+  // wide enough for the prediction's rotation error, which the refinement then takes out.
+  const double threshold = options.road_ransac_threshold_px;
+  const double wide = 3.0 * threshold;
+  Eigen::Vector4d best = Eigen::Vector4d::Zero();
+  int best_count = -1;
+  for (size_t i = 0; i < road_prev.size(); ++i) {
+    const Eigen::Vector3d ray = inverse_intrinsics * road_prev[i].homogeneous();
+    const Eigen::Vector3d a = intrinsics * rotation * ray;
+    const Eigen::Vector3d b = intrinsics * rotation * direction * normal.dot(ray);
+    const Eigen::Vector2d& p = road_cur[i];
+    const Eigen::Vector2d along(b.x() - p.x() * b.z(), b.y() - p.y() * b.z());
+    const Eigen::Vector2d offset(a.x() - p.x() * a.z(), a.y() - p.y() * a.z());
+    if (!(along.squaredNorm() > 1e-12)) continue;
+    Eigen::Vector4d candidate = Eigen::Vector4d::Zero();
+    candidate(0) = offset.dot(along) / along.squaredNorm();
+    const int count = CountWithin(model.Homography(candidate), road_prev, road_cur, wide, nullptr);
+    if (count > best_count) {
+      best_count = count;
+      best = candidate;
+    }
+  }
+  if (best_count < options.road_min_tracks) return std::nullopt;
+  std::vector<int> inliers;
+  CountWithin(model.Homography(best), road_prev, road_cur, wide, &inliers);
+  Eigen::Vector4d params = Refine(model, best, road_prev, road_cur, inliers, threshold);
+  if (CountWithin(model.Homography(params), road_prev, road_cur, threshold, &inliers) <
+      options.road_min_tracks) {
+    return std::nullopt;
+  }
+  params = Refine(model, params, road_prev, road_cur, inliers, threshold);
+  Eigen::Matrix3d homography = model.Homography(params);
+  if (!homography.allFinite() || std::abs(homography(2, 2)) < 1e-12) return std::nullopt;
+  return homography / homography(2, 2);
 }
 
 cv::Mat CarryRoadMask(const cv::Mat& road_mask, const Eigen::Matrix3d& cur_from_src) {

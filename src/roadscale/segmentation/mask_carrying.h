@@ -18,6 +18,13 @@ struct MaskCarryOptions {
   // RANSAC inlier threshold in pixels: KLT's tracks are accurate to a few tenths of a pixel,
   // the road's unevenness and the mask's edge add a little more.
   double road_ransac_threshold_px = 2.0;
+  // The road's homography between two frames fitted as the road plane's under the motion the
+  // frontend measured into the earlier frame (FitRoadHomographyOnMotion: its step length and a
+  // small turn free), once a direction of travel has been measured; false: a free homography
+  // (FitRoadHomography), as before. In a jam the free fit, on a few small patches of road
+  // between the cars, carried the road mask onto the houses (docs/benchmark-history.md,
+  // "Carried road masks in a jam").
+  bool road_on_motion = true;
   // The moving-object mask grows by this many pixels per frame it is carried: what a car's
   // own motion can move its outline that the road's motion at its wheels does not explain.
   // 0 since the frontend checks every track against each segmented frame's own mask when it
@@ -47,6 +54,25 @@ std::optional<Eigen::Matrix3d> FitRoadHomography(const std::vector<Eigen::Vector
                                                  const std::vector<Eigen::Vector2d>& cur,
                                                  const cv::Mat& prev_road_mask,
                                                  const MaskCarryOptions& options);
+
+// The road's homography cur_from_prev in the form a plane induces, K R (I - s d n^T) K^-1
+// (d the direction of travel and n the road normal, both unit vectors in the previous camera's
+// frame; s the step's length over the camera height), fitted to the same tracks as
+// FitRoadHomography: `s` and a small rotation correction (three angles) about the predicted
+// `rotation` (cur_from_prev), the direction and the normal as given. Nothing when too few
+// tracks or inliers.
+//
+// Why not the free homography: in a jam the road shows between the cars in a few small
+// patches that move a few pixels a frame, within reach of any of the eight parameters' fits
+// there, and the free fit's mapping away from those patches is whatever the sample left it:
+// on a rendered jam it magnified the road by a third in one frame of 0.17 m, and the road
+// mask carried through it covered the houses (docs/benchmark-history.md, "Carried road masks
+// in a jam"). Four parameters of a plane's motion cannot move the road off the road.
+std::optional<Eigen::Matrix3d> FitRoadHomographyOnMotion(
+    const std::vector<Eigen::Vector2d>& prev, const std::vector<Eigen::Vector2d>& cur,
+    const cv::Mat& prev_road_mask, const Eigen::Matrix3d& intrinsics,
+    const Eigen::Matrix3d& rotation, const Eigen::Vector3d& direction,
+    const Eigen::Vector3d& normal, const MaskCarryOptions& options);
 
 // A road mask moved by the road's homography `cur_from_src` (nearest neighbour; pixels that
 // come from outside the source image are not road).
