@@ -1,5 +1,6 @@
 #include "roadscale/pipeline/frontend_mask_carrier.h"
 
+#include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -97,6 +98,53 @@ TEST(FrontendMaskCarrier, MeasuresTheShareOfTheRoadStillCarried) {
   with_car.Masks(0, {}, take_car_on_road);
   with_car.Masks(1, moved_down(0.0), take_car_on_road);
   EXPECT_NEAR(with_car.carried_road_share(), 0.9, 1e-9);
+}
+
+// The road's homography from frame to frame is fitted on the motion the frontend measured into
+// the frame before (MaskCarryOptions::road_on_motion): with the road in two small patches, as
+// between the cars of a jam, the carried road follows the plane's true motion everywhere.
+TEST(FrontendMaskCarrier, CarriesTheRoadOnTheMotionItWasGiven) {
+  Eigen::Matrix3d k;
+  k << 700, 0, 600, 0, 700, 180, 0, 0, 1;
+  const auto take = [](int) {
+    SegmentationResult result;
+    result.labels = cv::Mat(360, 1200, CV_8UC1, cv::Scalar(0));
+    result.road_mask = cv::Mat(360, 1200, CV_8UC1, cv::Scalar(0));
+    result.road_mask.rowRange(200, 360).setTo(255);
+    result.dynamic_mask = cv::Mat(360, 1200, CV_8UC1, cv::Scalar(0));
+    cv::bitwise_not(result.dynamic_mask, result.static_mask);
+    return result;
+  };
+  // 0.17 m straight ahead over a road 1.65 m below: H = K (I - s d n^T) K^-1.
+  const Eigen::Matrix3d truth =
+      k *
+      (Eigen::Matrix3d::Identity() -
+       (0.17 / 1.65) * Eigen::Vector3d::UnitZ() * Eigen::Vector3d::UnitY().transpose()) *
+      k.inverse();
+  std::vector<Correspondence> patches;
+  for (const Eigen::Vector2d& corner : {Eigen::Vector2d(440, 290), Eigen::Vector2d(760, 305)}) {
+    for (int y = 0; y < 20; y += 5) {
+      for (int x = 0; x < 30; x += 8) {
+        const Eigen::Vector2d prev = corner + Eigen::Vector2d(x, y);
+        const auto id = static_cast<int64_t>(patches.size());
+        const Eigen::Vector2d noise(0.3 * std::sin(1.7 * id), 0.3 * std::cos(2.3 * id));
+        patches.push_back({id, prev, (truth * prev.homogeneous()).hnormalized() + noise});
+      }
+    }
+  }
+  TwoViewMotion motion;
+  motion.status = MotionStatus::kOk;
+  motion.direction = Eigen::Vector3d::UnitZ();
+  FrontendMaskCarrier carrier(MaskCarryOptions{}, /*latency_frames=*/2, k);
+  carrier.Masks(0, {}, take);
+  carrier.AddMotion(motion);
+  carrier.Masks(1, patches, take);
+  ASSERT_FALSE(carrier.carry_failed());
+  for (const Eigen::Vector2d& p :
+       {Eigen::Vector2d(50, 355), Eigen::Vector2d(1150, 355), Eigen::Vector2d(600, 205)}) {
+    const Eigen::Vector2d carried = (carrier.last_step() * p.homogeneous()).hnormalized();
+    EXPECT_LT((carried - (truth * p.homogeneous()).hnormalized()).norm(), 1.0) << p.transpose();
+  }
 }
 
 }  // namespace
