@@ -515,6 +515,8 @@ if [[ "$mode" == "concurrent" ]]; then
   wait "$pid" 2>/dev/null || true
   grep -q "a: interrupted after" "$out/batch.log" || fail "no interrupted line: $(cat "$out/batch.log")"
   ! grep -q "FAILED" "$out/batch.log" || fail "an interrupted drive shown as FAILED"
+  grep -q -- "- a: interrupted: the same command runs it again" "$out/batch/summary.md" ||
+    fail "the summary does not list the drive as interrupted: $(cat "$out/batch/summary.md")"
   echo "bad inputs (concurrent): $cases cases passed"
   exit 0
 fi

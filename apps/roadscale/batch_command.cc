@@ -242,13 +242,14 @@ void RunBatch(const BatchArguments& arguments) {
           record.exit_status = exit.status;
           record.error = exit.status == 0 ? "" : batch::LastErrorLine(processes[i].log_path);
           record.wall_s = exit.wall_s;
+          record.interrupted = exit.status != 0 && InterruptScope::interrupted();
           record.outputs = batch::RunOutputsIn(dir);
           batch::WriteDriveRecord(dir, record);
           char seconds[32];
           std::snprintf(seconds, sizeof(seconds), "%.1f s", exit.wall_s);
           if (exit.status == 0) {
             progress.Line(record.name, std::string("done in ") + seconds);
-          } else if (InterruptScope::interrupted()) {
+          } else if (record.interrupted) {
             // Stopped by the batch's own Ctrl-C or SIGTERM: the same command runs it again.
             progress.Line(record.name, "interrupted after " + std::string(seconds) + " (log " +
                                            processes[i].log_path + ")");

@@ -46,6 +46,7 @@ void WriteDriveRecord(const std::string& drive_dir, const DriveRecord& record) {
   json["exit_status"] = record.exit_status;
   json["error"] = record.error;
   json["wall_s"] = record.wall_s;
+  json["interrupted"] = record.interrupted;
   json["outputs"] = record.outputs;
   WriteFileAtomically(RecordPath(drive_dir), json.dump(2) + '\n');
 }
@@ -62,6 +63,8 @@ std::optional<DriveRecord> ReadDriveRecord(const std::string& drive_dir) {
     record.exit_status = json.at("exit_status").get<int>();
     record.error = json.at("error").get<std::string>();
     record.wall_s = json.at("wall_s").get<double>();
+    // Records written before the field existed were never of an interrupted drive's.
+    record.interrupted = json.value("interrupted", false);
     record.outputs = json.at("outputs").get<std::vector<std::string>>();
     return record;
   } catch (const nlohmann::json::exception& e) {

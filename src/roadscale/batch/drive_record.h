@@ -21,7 +21,9 @@ struct DriveRecord {
   int exit_status = 0;                 // the process's; 128 + N when signal N ended it
   std::string error;                   // its last "roadscale: error: ..." line, when it failed
   double wall_s = 0.0;                 // the process's wall time
-  std::vector<std::string> outputs;    // run's output files present when it ended
+  // Stopped by the batch's own Ctrl-C or SIGTERM, not failed: the same command runs it again.
+  bool interrupted = false;
+  std::vector<std::string> outputs;  // run's output files present when it ended
 };
 
 // Writes the record into `drive_dir` (through a temporary file renamed over it, so that a

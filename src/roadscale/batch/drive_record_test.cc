@@ -48,6 +48,7 @@ TEST_F(FinishedDriveTest, RecordReadsBackAsWritten) {
   EXPECT_EQ(read->fingerprint, "f1");
   EXPECT_EQ(read->arguments, record_.arguments);
   EXPECT_EQ(read->wall_s, 12.5);
+  EXPECT_FALSE(read->interrupted);
   EXPECT_THAT(read->outputs,
               ElementsAre("poses_kitti.txt", "poses_tum.txt", "frames.csv", "config_used.yaml",
                           "report.html", "metrics.json", "gt_poses_kitti.txt"));

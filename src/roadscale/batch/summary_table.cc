@@ -127,6 +127,8 @@ BatchSummary SummarizeDrives(const std::string& dir, const std::vector<std::stri
       const std::optional<DriveRecord> record = ReadDriveRecord(drive_dir);
       if (!record) {
         summary.unfinished.push_back({name, "not run"});
+      } else if (record->exit_status != 0 && record->interrupted) {
+        summary.unfinished.push_back({name, "interrupted: the same command runs it again"});
       } else if (record->exit_status != 0) {
         summary.unfinished.push_back(
             {name, "failed (exit status " + std::to_string(record->exit_status) + ")" +

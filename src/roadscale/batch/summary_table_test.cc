@@ -127,6 +127,27 @@ TEST(SummaryTableTest, FailedAndMissingDrivesAreListedAndTheOthersKeepTheirRows)
   EXPECT_THAT(FormatSummaryHtml(summary), HasSubstr("<a href=\"good/report.html\">good</a>"));
 }
 
+// A drive stopped by the batch's own Ctrl-C is listed as interrupted, not failed; a record
+// written before the field existed reads as not interrupted.
+TEST(SummaryTableTest, AnInterruptedDriveIsListedAsInterruptedNotFailed) {
+  TempDir batch;
+  DriveRecord stopped;
+  stopped.name = "stopped";
+  stopped.exit_status = 1;
+  stopped.error = "interrupted after 12 frames";
+  stopped.interrupted = true;
+  std::filesystem::create_directories(batch.path() / "stopped");
+  WriteDriveRecord(batch.File("stopped"), stopped);
+  std::filesystem::create_directories(batch.path() / "old");
+  WriteTextFile((batch.path() / "old" / kDriveRecordFile).string(),
+                R"({"name": "old", "fingerprint": "f", "arguments": [], "exit_status": 1,
+                    "error": "cfg.yaml:3: unknown key", "wall_s": 1.0, "outputs": []})");
+  const BatchSummary summary = SummarizeDrives(batch.path().string(), {"stopped", "old"});
+  ASSERT_EQ(summary.unfinished.size(), 2U);
+  EXPECT_EQ(summary.unfinished[0].reason, "interrupted: the same command runs it again");
+  EXPECT_EQ(summary.unfinished[1].reason, "failed (exit status 1): cfg.yaml:3: unknown key");
+}
+
 // A record's wall time of 1e-300 s printed a frames/s of hundreds of digits (issue 30).
 TEST(SummaryTableTest, AWallTimeNoProcessTakesGivesNoFramesPerSecond) {
   TempDir batch;
