@@ -77,6 +77,7 @@ void RoadTracks(const std::vector<Eigen::Vector2d>& prev, const std::vector<Eige
 // K exp([omega]x) R (I - s d n^T) K^-1 of FitRoadHomographyOnMotion.
 struct PlaneMotionModel {
   Eigen::Matrix3d intrinsics;
+  Eigen::Matrix3d inverse_intrinsics;  // computed once: every candidate and iteration needs it
   Eigen::Matrix3d rotation;
   Eigen::Vector3d direction;
   Eigen::Vector3d normal;
@@ -90,7 +91,7 @@ struct PlaneMotionModel {
                     : Eigen::Matrix3d::Identity();
     return intrinsics * correction * rotation *
            (Eigen::Matrix3d::Identity() - params(0) * direction * normal.transpose()) *
-           intrinsics.inverse();
+           inverse_intrinsics;
   }
 };
 
@@ -196,8 +197,7 @@ std::optional<Eigen::Matrix3d> FitRoadHomographyOnMotion(
   std::vector<Eigen::Vector2d> road_prev, road_cur;
   RoadTracks(prev, cur, prev_road_mask, &road_prev, &road_cur);
   if (static_cast<int>(road_prev.size()) < options.road_min_tracks) return std::nullopt;
-  const PlaneMotionModel model{intrinsics, rotation, direction, normal};
-  const Eigen::Matrix3d inverse_intrinsics = intrinsics.inverse();
+  const PlaneMotionModel model{intrinsics, intrinsics.inverse(), rotation, direction, normal};
   // Each track's own s with the predicted rotation (a line's least squares: the mapped pixel
   // is the projection of a - s b), then the s that the most tracks agree with, within a band
   // wide enough for the prediction's rotation error, which the refinement then takes out.
@@ -206,7 +206,7 @@ std::optional<Eigen::Matrix3d> FitRoadHomographyOnMotion(
   Eigen::Vector4d best = Eigen::Vector4d::Zero();
   int best_count = -1;
   for (size_t i = 0; i < road_prev.size(); ++i) {
-    const Eigen::Vector3d ray = inverse_intrinsics * road_prev[i].homogeneous();
+    const Eigen::Vector3d ray = model.inverse_intrinsics * road_prev[i].homogeneous();
     const Eigen::Vector3d a = intrinsics * rotation * ray;
     const Eigen::Vector3d b = intrinsics * rotation * direction * normal.dot(ray);
     const Eigen::Vector2d& p = road_cur[i];
