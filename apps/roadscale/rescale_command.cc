@@ -49,6 +49,7 @@ struct RescaleArguments {
   std::string detector = DetectorTypeName(TrajectoryRescalerOptions().tracker.detector.type);
   bool no_refine = false;
   bool smooth_ratio = false;
+  int span_steps = TrajectoryRescalerOptions().max_span_steps;
   std::string config;
   std::string out;
 };
@@ -147,6 +148,9 @@ void RunRescale(const RescaleArguments& arguments) {
   options.tracker.detector.type = ParseDetectorType(arguments.detector);
   options.refine_motion = !arguments.no_refine;
   options.step_own_ratio = !arguments.smooth_ratio;
+  CheckOption(arguments.span_steps >= 1, "--span-steps",
+              "must be >= 1 (1: each step's own pair only)");
+  options.max_span_steps = arguments.span_steps;
   TrajectoryFormat format = TrajectoryFormat::kKitti;
   const Trajectory external = ReadExternalTrajectory(arguments, &format);
   if (external.size() == 0) ThrowFileError(arguments.trajectory, "no poses in the file");
@@ -204,6 +208,7 @@ void RunRescale(const RescaleArguments& arguments) {
   TrajectoryRescaler rescaler(source->camera().camera, external, pose_frames, options);
   Trajectory rescaled;
   std::map<RescaleStatus, int> counts;
+  int span_fixed = 0;  // ok over a span of steps (TrajectoryRescalerOptions::max_span_steps)
   std::vector<RescaledPose> measured;  // without their point lists, for MeasureInputAgreement
   double total_ms = 0.0;
   const InterruptScope interrupt_scope;
@@ -213,6 +218,7 @@ void RunRescale(const RescaleArguments& arguments) {
     if (pose.status != RescaleStatus::kFirst) {
       WriteRow(csv_file, out / "rescale.csv", FormatRescaleCsv(pose));
       ++counts[pose.status];
+      if (pose.status == RescaleStatus::kOk && pose.road_steps > 1) ++span_fixed;
       total_ms += pose.total_ms;
       measured.push_back(pose);
       measured.back().estimate = ScaleEstimate();
@@ -232,6 +238,9 @@ void RunRescale(const RescaleArguments& arguments) {
   bool first = true;
   for (const auto& [status, count] : counts) {
     std::cout << (first ? "" : ", ") << count << ' ' << RescaleStatusName(status);
+    if (status == RescaleStatus::kOk && span_fixed > 0) {
+      std::cout << " (" << span_fixed << " of them over a span of steps)";
+    }
     first = false;
   }
   std::cout << "), " << Fixed(total_ms / static_cast<double>(steps), 1) << " ms a step\n";
@@ -325,6 +334,11 @@ void RegisterRescaleCommand(CLI::App& app) {
                     "not its own road plane's: for an input whose step lengths are right up to a "
                     "slowly drifting scale (default: off; a step's own ratio where it has a road "
                     "plane, the filtered one where it has none)");
+  command
+      ->add_option("--span-steps", arguments->span_steps,
+                   "A step without a road plane of its own is measured again from up to this "
+                   "many poses back, and takes that span's ratio (1: each step's own pair only)")
+      ->capture_default_str();
   command->add_flag("--no-refine", arguments->no_refine,
                     "Triangulate with the input's motion as it is, without refining it on the "
                     "tracks (default: refined; the output keeps the input's motion either way)");

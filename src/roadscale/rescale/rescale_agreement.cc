@@ -29,7 +29,8 @@ std::optional<InputAgreement> MeasureInputAgreement(const std::vector<RescaledPo
   std::vector<double> ratio_changes;
   const RescaledPose* previous = nullptr;
   for (const RescaledPose& step : steps) {
-    const bool own = step.status == RescaleStatus::kOk && std::isfinite(step.raw_ratio);
+    const bool own =
+        step.status == RescaleStatus::kOk && step.road_steps == 1 && std::isfinite(step.raw_ratio);
     if (own && std::isfinite(step.points_ratio) && std::isfinite(step.alignment_ratio)) {
       fix_differences.push_back(std::log(step.points_ratio / step.alignment_ratio));
     }

@@ -20,6 +20,7 @@ std::vector<RescaledPose> Steps(double input_error, double fix_error, int count,
     RescaledPose step;
     step.pose = static_cast<size_t>(k);
     step.status = RescaleStatus::kOk;
+    step.road_steps = 1;
     step.points_ratio = true_ratio * std::exp(fix_error * rng.Normal());
     step.alignment_ratio = true_ratio * std::exp(fix_error * rng.Normal());
     step.raw_ratio = std::sqrt(step.points_ratio * step.alignment_ratio);
@@ -55,6 +56,13 @@ TEST(InputAgreement, HeldStepsBreakTheChainAndTooFewStepsGiveNoVerdict) {
   const std::optional<InputAgreement> fewer = MeasureInputAgreement(steps);
   EXPECT_FALSE(fewer.has_value());
   EXPECT_FALSE(MeasureInputAgreement(Steps(0.0, 0.03, kMinAgreementSteps, 4)).has_value());
+}
+
+TEST(InputAgreement, StepsMeasuredOverASpanAreNotTheirOwnRatios) {
+  std::vector<RescaledPose> steps = Steps(0.0, 0.03, 40, 3);
+  // Every third step fixed over a span of poses: a ratio, but not the step's own.
+  for (size_t k = 0; k < steps.size(); k += 3) steps[k].road_steps = 3;
+  EXPECT_FALSE(MeasureInputAgreement(steps).has_value());
 }
 
 }  // namespace

@@ -22,8 +22,12 @@ namespace roadscale {
 namespace {
 
 // The VO's motion from pose a to pose b, as cur_from_prev.
+Rigid3d PairMotion(const Trajectory& trajectory, size_t a, size_t b) {
+  return trajectory.world_from_cam[b].inverse() * trajectory.world_from_cam[a];
+}
+
 Rigid3d StepMotion(const Trajectory& trajectory, size_t b) {
-  return trajectory.world_from_cam[b].inverse() * trajectory.world_from_cam[b - 1];
+  return PairMotion(trajectory, b - 1, b);
 }
 
 std::string FormatTime(double seconds) {
@@ -49,6 +53,8 @@ void TrajectoryRescalerOptions::Check() const {
       "rescale.stationary_fraction", "must be in [0, 1)");
   CheckOption(std::isfinite(max_speed) && max_speed >= 0.0, "rescale.max_speed",
               "must be >= 0 m/s (0: no limit)");
+  CheckOption(max_span_steps >= 1, "rescale.max_span_steps",
+              "must be >= 1 (1: each step's own pair only)");
 }
 
 const char* RescaleStatusName(RescaleStatus status) {
@@ -195,10 +201,14 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   if (next_pose_ == 0) {
     tracker_.Track(static_cast<int>(position), frame.image, segmentation.dynamic_mask);
     tracker_.Detect(segmentation.static_mask, /*force=*/true);
-    prev_road_mask_ = segmentation.road_mask.clone();
-    prev_image_ = frame.image;
-    prev_shadow_free_road_ =
-        ShadowFreeRoad(prev_image_, prev_road_mask_, segmentation.dynamic_mask.clone());
+    PoseFrame first_frame;
+    first_frame.pose = 0;
+    first_frame.position = position;
+    first_frame.image = frame.image;
+    first_frame.road_mask = segmentation.road_mask.clone();
+    first_frame.shadow_free_road =
+        ShadowFreeRoad(first_frame.image, first_frame.road_mask, segmentation.dynamic_mask.clone());
+    recent_.push_back(std::move(first_frame));
     prev_pose_frame_index_ = frame.index;
     prev_pose_timestamp_ = frame.timestamp;
     RescaledPose first;
@@ -231,10 +241,14 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
     return finished;
   }
 
-  const cv::Mat road_mask = segmentation.road_mask.clone();
-  ShadowFreeRoad shadow_free_road(frame.image, road_mask, segmentation.dynamic_mask.clone());
-  RescaledPose step = MeasureStep(next_pose_, frame.image, road_mask, &shadow_free_road,
-                                  frame.timestamp - prev_pose_timestamp_);
+  PoseFrame current;
+  current.pose = next_pose_;
+  current.position = position;
+  current.image = frame.image;
+  current.road_mask = segmentation.road_mask.clone();
+  current.shadow_free_road =
+      ShadowFreeRoad(current.image, current.road_mask, segmentation.dynamic_mask.clone());
+  RescaledPose step = MeasureStep(next_pose_, &current, frame.timestamp - prev_pose_timestamp_);
   step.frame = frame.index;
   step.prev_frame = prev_pose_frame_index_;
   prev_pose_frame_index_ = frame.index;
@@ -248,9 +262,8 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   constexpr bool kDetectEveryPose = true;
   tracker_.Detect(segmentation.static_mask, kDetectEveryPose);
   step.detection_ms = tracker_.stats().detection_ms;
-  prev_road_mask_ = road_mask;
-  prev_image_ = frame.image;
-  prev_shadow_free_road_ = std::move(shadow_free_road);
+  recent_.push_back(std::move(current));
+  while (recent_.size() > static_cast<size_t>(options_.max_span_steps)) recent_.pop_front();
   step.total_ms = step_total_ms_ + segmentation_ms + read_ms + MillisecondsSince(start);
   step_tracking_ms_ = 0.0;
   step_total_ms_ = 0.0;
@@ -275,70 +288,58 @@ std::vector<RescaledPose> TrajectoryRescaler::AddFrame(const Frame& frame,
   return finished;
 }
 
-double TrajectoryRescaler::AlignRoad(const cv::Mat& image, const cv::Mat& road_mask,
-                                     ShadowFreeRoad* shadow_free_road, const Rigid3d& b_from_a,
+double TrajectoryRescaler::AlignRoad(PoseFrame* from, PoseFrame* current, const Rigid3d& b_from_a,
                                      double external_length) {
   const double none = std::numeric_limits<double>::quiet_NaN();
-  if (!options_.road_alignment || road_mask.empty() || prev_road_mask_.empty() ||
-      prev_image_.empty() || image.channels() != 1) {
+  if (!options_.road_alignment || current->road_mask.empty() || from->road_mask.empty() ||
+      current->image.channels() != 1) {
     return none;
   }
-  // The last ratio predicts this step's |t| / h; before the first, the whole range is searched.
+  // The last ratio predicts this pair's |t| / h; before the first, the whole range is searched.
   const double expected =
       has_ratio_ ? ratio_ * external_length / options_.scale.camera_height : 0.0;
   const std::optional<Eigen::Vector3d> normal =
       ExpectedRoadNormal(b_from_a, options_.scale.road_model);
   const Eigen::Vector3d normal_guess = normal.value_or(Eigen::Vector3d::UnitY());
   RoadPlaneAlignment alignment =
-      AlignRoadPlane(prev_image_, image, prev_road_mask_, road_mask, camera_, b_from_a,
-                     normal_guess, expected, options_.alignment);
+      AlignRoadPlane(from->image, current->image, from->road_mask, current->road_mask, camera_,
+                     b_from_a, normal_guess, expected, options_.alignment);
   const double brightness = options_.alignment_shadow_brightness;
   if (!alignment.ok && brightness > 0.0) {
     // The whole road found no plane: once more without the moving objects' shadows.
-    if (prev_shadow_free_road_.HasShadows(brightness) || shadow_free_road->HasShadows(brightness)) {
-      alignment = AlignRoadPlane(prev_image_, image, prev_shadow_free_road_.Road(brightness),
-                                 shadow_free_road->Road(brightness), camera_, b_from_a,
-                                 normal_guess, expected, options_.alignment);
+    if (from->shadow_free_road.HasShadows(brightness) ||
+        current->shadow_free_road.HasShadows(brightness)) {
+      alignment =
+          AlignRoadPlane(from->image, current->image, from->shadow_free_road.Road(brightness),
+                         current->shadow_free_road.Road(brightness), camera_, b_from_a,
+                         normal_guess, expected, options_.alignment);
     }
   }
   if (!alignment.ok) return none;
   return options_.scale.camera_height / (alignment.plane.height * external_length);
 }
 
-RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
-                                             const cv::Mat& road_mask,
-                                             ShadowFreeRoad* shadow_free_road, double seconds) {
-  const auto start = std::chrono::steady_clock::now();
-  RescaledPose step;
-  step.pose = pose;
-  step.duration_s = seconds;
-  const Rigid3d b_from_a = StepMotion(external_, pose);
-  step.external_length = b_from_a.translation().norm();
-  step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
-  step.alignment_ratio = std::numeric_limits<double>::quiet_NaN();
-  step.points_ratio = std::numeric_limits<double>::quiet_NaN();
+TrajectoryRescaler::PairFix TrajectoryRescaler::MeasurePair(PoseFrame* from, size_t to,
+                                                            PoseFrame* current) {
+  PairFix fix;
+  const Rigid3d b_from_a = PairMotion(external_, from->pose, to);
+  const double external_length = b_from_a.translation().norm();
+  // A span over which the VO went nowhere (it stood still, or came back): no direction.
+  if (!(external_length > options_.stationary_fraction * reference_step_length_)) return fix;
 
-  const size_t frame_a = pose_frames_[pose - 1];
   std::vector<int64_t> ids;
   std::vector<Eigen::Vector2d> prev_pixels;
   std::vector<Eigen::Vector2d> cur_pixels;
   for (const Track& track : tracker_.tracks()) {
-    if (track.first_frame > static_cast<int>(frame_a)) continue;
+    if (track.first_frame > static_cast<int>(from->position)) continue;
     ids.push_back(track.id);
-    prev_pixels.push_back(track.pixels[frame_a - static_cast<size_t>(track.first_frame)]);
+    prev_pixels.push_back(track.pixels[from->position - static_cast<size_t>(track.first_frame)]);
     cur_pixels.push_back(track.pixels.back());
   }
-  step.num_tracks = static_cast<int>(ids.size());
-
-  if (!(step.external_length > options_.stationary_fraction * reference_step_length_)) {
-    last_step_fixed_ = false;
-    step.status = RescaleStatus::kStationary;
-    step.scale_ms = MillisecondsSince(start);
-    return step;
-  }
+  fix.num_tracks = static_cast<int>(ids.size());
 
   Eigen::Matrix3d rotation = NearestRotation(b_from_a.linear());
-  Eigen::Vector3d direction = b_from_a.translation() / step.external_length;
+  Eigen::Vector3d direction = b_from_a.translation() / external_length;
   std::vector<Eigen::Vector2d> prev_normalized;
   std::vector<Eigen::Vector2d> cur_normalized;
   prev_normalized.reserve(ids.size());
@@ -356,71 +357,114 @@ RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, const cv::Mat& image,
   if (options_.refine_motion && ids.size() >= kMinRefinementTracks) {
     const SampsonRefinementResult refined = RefineRelativePoseSampson(
         rotation, direction, prev_normalized, cur_normalized, camera_.fx, options_.refinement);
-    step.refinement_rotation_deg =
+    fix.refinement_rotation_deg =
         RotationAngle(refined.rotation * rotation.transpose()) * kDegreesPerRadian;
-    step.refinement_direction_deg =
+    fix.refinement_direction_deg =
         std::acos(std::clamp(refined.direction.normalized().dot(direction), -1.0, 1.0)) *
         kDegreesPerRadian;
-    if (step.refinement_rotation_deg <= kMaxRefinementRotationDeg &&
-        step.refinement_direction_deg <= kMaxRefinementDirectionDeg) {
+    if (fix.refinement_rotation_deg <= kMaxRefinementRotationDeg &&
+        fix.refinement_direction_deg <= kMaxRefinementDirectionDeg) {
       rotation = refined.rotation;
       direction = refined.direction.normalized();
-      step.refined = true;
+      fix.refined = true;
     }
   }
 
   const Eigen::Matrix3d essential = SkewMatrix(direction) * rotation;
   std::vector<Eigen::Vector2d> kept_prev;
   std::vector<Eigen::Vector2d> kept_cur;
-  std::vector<int64_t> outliers;
   for (size_t i = 0; i < ids.size(); ++i) {
     if (std::abs(SampsonErrorPx(essential, prev_normalized[i], cur_normalized[i], camera_.fx)) <=
         options_.max_sampson_error_px) {
       kept_prev.push_back(prev_pixels[i]);
       kept_cur.push_back(cur_pixels[i]);
     } else {
-      outliers.push_back(ids[i]);
+      fix.outliers.push_back(ids[i]);
     }
   }
-  step.num_pairs = static_cast<int>(kept_prev.size());
+  fix.num_pairs = static_cast<int>(kept_prev.size());
+
+  fix.estimate =
+      estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), from->road_mask);
+  fix.alignment_ratio = AlignRoad(from, current, MakeRigid3d(rotation, direction), external_length);
+  if (fix.estimate.status == ScaleStatus::kOk) {
+    fix.points_ratio = fix.estimate.raw_scale / external_length;
+  }
+  // Two measurements of the same plane with errors of their own: their geometric mean beat
+  // either alone on KITTI 00 and was between them on the rendered street
+  // (docs/benchmark-history.md, "Rescale").
+  if (std::isfinite(fix.alignment_ratio) && std::isfinite(fix.points_ratio)) {
+    fix.raw_ratio = std::sqrt(fix.alignment_ratio * fix.points_ratio);
+  } else if (std::isfinite(fix.alignment_ratio) || std::isfinite(fix.points_ratio)) {
+    fix.raw_ratio = std::isfinite(fix.alignment_ratio) ? fix.alignment_ratio : fix.points_ratio;
+  }
+  return fix;
+}
+
+RescaledPose TrajectoryRescaler::MeasureStep(size_t pose, PoseFrame* current, double seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  RescaledPose step;
+  step.pose = pose;
+  step.duration_s = seconds;
+  step.external_length = StepMotion(external_, pose).translation().norm();
+  step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
+  if (!(step.external_length > options_.stationary_fraction * reference_step_length_)) {
+    last_step_fixed_ = false;
+    step.status = RescaleStatus::kStationary;
+    step.num_tracks = static_cast<int>(
+        std::count_if(tracker_.tracks().begin(), tracker_.tracks().end(), [&](const Track& track) {
+          return track.first_frame <= static_cast<int>(recent_.back().position);
+        }));
+    step.scale_ms = MillisecondsSince(start);
+    return step;
+  }
+
+  const PairFix own = MeasurePair(&recent_.back(), pose, current);
+  step.num_tracks = own.num_tracks;
+  step.num_pairs = own.num_pairs;
+  step.refined = own.refined;
+  step.refinement_rotation_deg = own.refinement_rotation_deg;
+  step.refinement_direction_deg = own.refinement_direction_deg;
+  step.estimate = own.estimate;
+  step.alignment_ratio = own.alignment_ratio;
+  step.points_ratio = own.points_ratio;
+  step.raw_ratio = own.raw_ratio;
+  if (std::isfinite(step.raw_ratio)) step.road_steps = 1;
   // Only a motion the tracks agree with may end tracks: with the VO's unrefined motion a
   // few tenths of a degree off, good tracks far from the epipole would go too.
-  if (step.refined) tracker_.Drop(outliers);
-
-  step.estimate =
-      estimator_.Estimate(kept_prev, kept_cur, MakeRigid3d(rotation, direction), prev_road_mask_);
-  step.alignment_ratio = AlignRoad(image, road_mask, shadow_free_road,
-                                   MakeRigid3d(rotation, direction), step.external_length);
-  if (step.estimate.status == ScaleStatus::kOk) {
-    step.points_ratio = step.estimate.raw_scale / step.external_length;
-  }
-  if (std::isfinite(step.alignment_ratio) || std::isfinite(step.points_ratio)) {
-    const double tracks_ratio = step.points_ratio;
-    // Two measurements of the same plane with errors of their own: their geometric mean beat
-    // either alone on KITTI 00 and was between them on the rendered street
-    // (docs/benchmark-history.md, "Rescale").
-    if (std::isfinite(step.alignment_ratio) && std::isfinite(tracks_ratio)) {
-      step.raw_ratio = std::sqrt(step.alignment_ratio * tracks_ratio);
-    } else {
-      step.raw_ratio = std::isfinite(step.alignment_ratio) ? step.alignment_ratio : tracks_ratio;
+  if (own.refined) tracker_.Drop(own.outliers);
+  // No road plane of its own: the nearest span back that has one.
+  for (size_t back = 2; !std::isfinite(step.raw_ratio) && back <= recent_.size(); ++back) {
+    const PairFix span = MeasurePair(&recent_[recent_.size() - back], pose, current);
+    if (std::isfinite(span.raw_ratio)) {
+      step.raw_ratio = span.raw_ratio;
+      step.road_steps = static_cast<int>(back);
+      step.detail = "over the last " + std::to_string(back) + " steps";
     }
   }
-  if (std::isfinite(step.raw_ratio) && options_.max_speed > 0.0 && seconds > 0.0 &&
-      step.raw_ratio * step.external_length / seconds > options_.max_speed) {
+
+  const bool too_fast = std::isfinite(step.raw_ratio) && options_.max_speed > 0.0 &&
+                        seconds > 0.0 &&
+                        step.raw_ratio * step.external_length / seconds > options_.max_speed;
+  if (too_fast) {
     step.raw_ratio = std::numeric_limits<double>::quiet_NaN();
+    step.road_steps = 0;
     step.status = RescaleStatus::kHeld;
     step.detail = "held: too fast";
   } else if (std::isfinite(step.raw_ratio)) {
     ratio_ = options_.scale.use_filter ? ratio_filter_.Add(step.raw_ratio) : step.raw_ratio;
     has_ratio_ = true;
     step.status = RescaleStatus::kOk;
-    const double speed = seconds > 0.0 ? step.raw_ratio * step.external_length / seconds : 0.0;
-    held_choice_.AddFixed(step.raw_ratio, speed, last_step_fixed_);
+    if (step.road_steps == 1) {
+      const double speed = seconds > 0.0 ? step.raw_ratio * step.external_length / seconds : 0.0;
+      held_choice_.AddFixed(step.raw_ratio, speed, last_step_fixed_);
+    }
   } else {
     step.status = RescaleStatus::kHeld;
     step.detail = ScaleStatusName(step.estimate.status);
   }
-  last_step_fixed_ = step.status == RescaleStatus::kOk;
+  // HeldStepChoice compares consecutive steps' own fixes; a span's is not one.
+  last_step_fixed_ = step.status == RescaleStatus::kOk && step.road_steps == 1;
   step.scale_ms = MillisecondsSince(start);
   return step;
 }
@@ -435,6 +479,7 @@ RescaledPose TrajectoryRescaler::Emit(RescaledPose step) {
     step.ratio = held_choice_.speed() * step.duration_s / step.external_length;
     step.detail += ", the speed held";
   }
+
   step.metric_length =
       step.status == RescaleStatus::kStationary ? 0.0 : step.ratio * step.external_length;
   const Eigen::Vector3d translation =
@@ -507,7 +552,8 @@ std::string RescaleCsvHeader() {
   return "pose,frame_a,frame_b,timestamp,status,detail,external_length,raw_ratio,ratio,"
          "metric_length,tracks,pairs,refined,refinement_rotation_deg,refinement_direction_deg,"
          "triangulated,preselected,after_vote,after_road_model,ransac_inliers,plane_h,"
-         "alignment_ratio,points_ratio,segmentation_ms,tracking_ms,detection_ms,scale_ms,total_ms";
+         "alignment_ratio,points_ratio,road_steps,segmentation_ms,tracking_ms,detection_ms,scale_"
+         "ms,total_ms";
 }
 
 std::string FormatRescaleCsv(const RescaledPose& pose) {
@@ -526,6 +572,7 @@ std::string FormatRescaleCsv(const RescaledPose& pose) {
   if (std::isfinite(pose.alignment_ratio)) row << pose.alignment_ratio;
   row << ',';
   if (std::isfinite(pose.points_ratio)) row << pose.points_ratio;
+  row << ',' << pose.road_steps;
   row.precision(4);
   row << ',' << pose.segmentation_ms << ',' << pose.tracking_ms << ',' << pose.detection_ms << ','
       << pose.scale_ms << ',' << pose.total_ms;

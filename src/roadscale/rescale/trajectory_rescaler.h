@@ -109,6 +109,18 @@ struct TrajectoryRescalerOptions {
   // km/h), as the keyframe back end's Mapping.first_scale_max_speed.
   double max_speed = 70.0;
 
+  // A step without a road plane of its own is measured again from up to this many poses back
+  // (the VO's motion over the span, refined on the tracks through it, and the road alignment
+  // between the span's two frames), and takes the span's ratio (metres per VO unit) where the
+  // span finds the road; 1: only the step's own pair, as before. The VO's scale drifts slowly,
+  // so the span's ratio is the step's too, and a longer baseline and a longer stretch of the
+  // VO's path give the road plane what one step may not: a creeping car's step is too short
+  // for it, and on KITTI 07 Wang et al.'s single steps in the right turn lay 1-2.5 degrees off
+  // the truth's direction, the road alignment tilted 5-12 degrees to fit them and was refused,
+  // and 12 steps were held; with spans 3 are (docs/benchmark-history.md, "Held steps measured
+  // over a span of poses"). The nearest span that finds the road is taken.
+  int max_span_steps = 4;
+
   // A step whose VO translation is shorter than this fraction of the median (non-zero) step
   // of the whole trajectory is stationary: its metric length stays 0.
   double stationary_fraction = 0.01;
@@ -119,7 +131,7 @@ struct TrajectoryRescalerOptions {
 
 enum class RescaleStatus {
   kFirst,             // the first pose: kept as the VO gives it
-  kOk,                // scaled by this step's road plane
+  kOk,                // scaled by this step's road plane (or its span's: road_steps)
   kHeld,              // no road plane in this step: the last ratio or speed (see `detail`)
   kBeforeFirstScale,  // before the first road plane: the first ratio, known later
   kStationary,        // the VO did not move: the step stays 0
@@ -159,6 +171,9 @@ struct RescaledPose {
   // mean, or the one that exists.
   double alignment_ratio = std::numeric_limits<double>::quiet_NaN();
   double points_ratio = std::numeric_limits<double>::quiet_NaN();
+  // The steps the road fix spans: 1, the step's own pair; more, measured from that many poses
+  // back (TrajectoryRescalerOptions::max_span_steps); 0 without a road fix.
+  int road_steps = 0;
 
   // Milliseconds: segmentation of frame b, KLT over the frames a+1..b, detection in frame
   // b, refinement + scale estimate, and the whole step (frame reading included).
@@ -220,14 +235,36 @@ class TrajectoryRescaler {
   bool has_ratio() const { return has_ratio_; }
 
  private:
-  // `image`, `road_mask`: frame b's grey image and road mask (empty: none);
-  // `shadow_free_road`: its road less its moving objects' shadows. `seconds`: from the
-  // previous pose's frame to this one's (TrajectoryRescalerOptions::max_speed).
-  RescaledPose MeasureStep(size_t pose, const cv::Mat& image, const cv::Mat& road_mask,
-                           ShadowFreeRoad* shadow_free_road, double seconds);
-  // The step's |t| / h from the road's pixels (NaN when it does not converge).
-  double AlignRoad(const cv::Mat& image, const cv::Mat& road_mask, ShadowFreeRoad* shadow_free_road,
-                   const Rigid3d& b_from_a, double external_length);
+  // A pose's frame, kept for the road fixes of the steps that start at it.
+  struct PoseFrame {
+    size_t pose = 0;
+    size_t position = 0;  // among the source's frames (the tracker's frame index)
+    cv::Mat image;        // grey
+    cv::Mat road_mask;    // empty: none
+    ShadowFreeRoad shadow_free_road;
+  };
+  // The road fix of the pair from pose frame `from` to pose `to` (the current frame).
+  struct PairFix {
+    int num_tracks = 0;
+    int num_pairs = 0;
+    bool refined = false;
+    double refinement_rotation_deg = 0.0;
+    double refinement_direction_deg = 0.0;
+    ScaleEstimate estimate;
+    double alignment_ratio = std::numeric_limits<double>::quiet_NaN();
+    double points_ratio = std::numeric_limits<double>::quiet_NaN();
+    double raw_ratio = std::numeric_limits<double>::quiet_NaN();  // metres per VO unit
+    std::vector<int64_t> outliers;  // tracks beyond max_sampson_error_px of the refined motion
+  };
+
+  // `current`: the pose's frame (its road mask empty: none; its shadow_free_road: its road less
+  // its moving objects' shadows). `seconds`: from the previous pose's frame to this one's
+  // (TrajectoryRescalerOptions::max_speed).
+  RescaledPose MeasureStep(size_t pose, PoseFrame* current, double seconds);
+  PairFix MeasurePair(PoseFrame* from, size_t to, PoseFrame* current);
+  // The pair's |t| / h from the road's pixels (NaN when it does not converge).
+  double AlignRoad(PoseFrame* from, PoseFrame* current, const Rigid3d& b_from_a,
+                   double external_length);
   // Applies `ratio` to the step and chains its pose onto the last emitted one.
   RescaledPose Emit(RescaledPose step);
 
@@ -243,12 +280,10 @@ class TrajectoryRescaler {
   double reference_step_length_ = 0.0;  // median non-zero VO step length
 
   size_t next_frame_ = 0;
-  size_t next_pose_ = 0;                  // the pose whose frame comes next
-  cv::Mat prev_road_mask_;                // road mask of the last pose's frame
-  cv::Mat prev_image_;                    // grey image of the last pose's frame
-  ShadowFreeRoad prev_shadow_free_road_;  // ... and its road less its moving objects' shadows
-  size_t prev_pose_frame_index_ = 0;      // Frame::index of the last pose's frame
-  double prev_pose_timestamp_ = 0.0;      // ... and its timestamp
+  size_t next_pose_ = 0;              // the pose whose frame comes next
+  std::deque<PoseFrame> recent_;      // the last max_span_steps poses' frames, newest last
+  size_t prev_pose_frame_index_ = 0;  // Frame::index of the last pose's frame
+  double prev_pose_timestamp_ = 0.0;  // ... and its timestamp
   bool has_ratio_ = false;
   double ratio_ = 0.0;                // the last filtered ratio
   std::deque<RescaledPose> pending_;  // steps waiting for the first ratio

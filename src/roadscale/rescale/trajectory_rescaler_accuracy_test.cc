@@ -150,10 +150,13 @@ struct PeerCase {
   const char* trajectory;  // in ../shared/peer_trajectories/
   const char* sequence;    // in ../shared/kitti/sequences/
   // Bounds on |length ratio - the floor's| and on ATE se3 over the floor's. Measured on this
-  // path (no segmentation, 2026-12-07, with the alignment's pitch limit and the held speed):
-  // Wang 00 0.014 / 3.6, LibVISO2-M 00 0.0075 / 1.46, Wang 07 0.023 / 6.6, LibVISO2-M 07
-  // 0.0030 / 1.47; each bound is that with a margin against regressions, not the issue's
-  // target (docs/benchmark-history.md, "Held steps keep the steadier of ratio and speed").
+  // path (no segmentation, 2026-12-08, with the steps without a road plane measured over a
+  // span of poses): Wang 00 0.013 / 3.5, LibVISO2-M 00 0.0038 / 1.35, Wang 07 0.0125 / 8.8,
+  // LibVISO2-M 07 0.025 / 1.64 (before the spans: 0.014 / 3.6, 0.0075 / 1.46, 0.023 / 6.6,
+  // 0.0030 / 1.47; LibVISO2-M's floor on 07 is itself 1.3 % short, since it repeats a pose
+  // where it fails, and the spans end 1.2 % long where the held steps ended 1.0 % short).
+  // Each bound is that with a margin against regressions, not the target
+  // (docs/benchmark-history.md, "Held steps measured over a span of poses").
   double max_ratio_gap;
   double max_ate_over_floor;
 };
@@ -204,8 +207,8 @@ TEST_P(RescalePeers, ComesNearTheFloorOfItsOwnDirections) {
 INSTANTIATE_TEST_SUITE_P(SharedKitti, RescalePeers,
                          ::testing::Values(PeerCase{"wang2018_00_0-199", "00", 0.02, 5.0},
                                            PeerCase{"libviso2m_00_0-199", "00", 0.015, 2.0},
-                                           PeerCase{"wang2018_07_0-159", "07", 0.035, 9.0},
-                                           PeerCase{"libviso2m_07_0-159", "07", 0.015, 2.0}),
+                                           PeerCase{"wang2018_07_0-159", "07", 0.02, 11.0},
+                                           PeerCase{"libviso2m_07_0-159", "07", 0.035, 2.0}),
                          [](const ::testing::TestParamInfo<PeerCase>& info) {
                            std::string name = info.param.trajectory;
                            for (char& c : name) {
