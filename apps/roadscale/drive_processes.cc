@@ -3,7 +3,6 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <cstring>
 #include <map>
 #include <thread>
 
@@ -28,7 +27,7 @@ struct Running {
 // async-signal-safe (the batch may have other threads).
 pid_t Start(const std::string& program, const DriveProcess& process) {
   const int log = open(process.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (log < 0) ThrowFileError(process.log_path, std::string("cannot open: ") + strerror(errno));
+  if (log < 0) ThrowFileError(process.log_path, std::string("cannot open: ") + ErrnoReason(errno));
   const int null = open("/dev/null", O_RDONLY | O_CLOEXEC);
   std::vector<std::string> words = {"roadscale"};
   words.insert(words.end(), process.arguments.begin(), process.arguments.end());
@@ -52,7 +51,8 @@ pid_t Start(const std::string& program, const DriveProcess& process) {
   const int fork_error = errno;
   close(log);
   if (null >= 0) close(null);
-  if (pid < 0) throw Error(std::string("batch: cannot start a process: ") + strerror(fork_error));
+  if (pid < 0)
+    throw Error(std::string("batch: cannot start a process: ") + ErrnoReason(fork_error));
   return pid;
 }
 

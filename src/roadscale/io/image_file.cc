@@ -1,7 +1,6 @@
 #include "roadscale/io/image_file.h"
 
 #include <cerrno>
-#include <cstring>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -28,7 +27,7 @@ cv::Mat ReadImageFile(const std::string& path, int flags, const std::string& wha
 void WriteImageFile(const std::string& path, const cv::Mat& image) {
   // Opened here first: where it cannot be, OpenCV would print a warning of its own.
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) ThrowFileError(path, std::string("cannot write image: ") + std::strerror(errno));
+  if (fd < 0) ThrowFileError(path, std::string("cannot write image: ") + ErrnoReason(errno));
   ::close(fd);
   bool written = false;
   try {

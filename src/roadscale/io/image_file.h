@@ -15,7 +15,7 @@ cv::Mat ReadImageFile(const std::string& path, int flags, const std::string& wha
 
 // Encodes `image` in the format of the path's extension and writes it (cv::imwrite), the way
 // every image roadscale writes is written: any failure, an exception of OpenCV's included, is
-// one line naming the file ("PATH: cannot write image: Permission denied"). Throws Error.
+// one line naming the file ("PATH: cannot write image: permission denied"). Throws Error.
 void WriteImageFile(const std::string& path, const cv::Mat& image);
 
 }  // namespace roadscale

@@ -36,7 +36,7 @@ TEST(ImageFile, AFailedWriteIsOneLineNamingTheFile) {
   const testing::TempDir dir;
   const std::string no_folder = dir.File("missing/a.png");
   const std::string error = ErrorOf([&] { WriteImageFile(no_folder, RandomImage()); });
-  EXPECT_EQ(error, no_folder + ": cannot write image: No such file or directory");
+  EXPECT_EQ(error, no_folder + ": cannot write image: no such file or directory");
   // OpenCV throws for a format it has no writer for; its message is not passed on.
   const std::string unknown = dir.File("a.unknown_format");
   const std::string thrown = ErrorOf([&] { WriteImageFile(unknown, RandomImage()); });

@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 
 #include <fcntl.h>
@@ -37,19 +36,19 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
        ("." + target.filename().string() + ".tmp" + std::to_string(static_cast<long>(::getpid()))))
           .string();
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) ThrowFileError(path, std::string("cannot write: ") + std::strerror(errno));
+  if (fd < 0) ThrowFileError(path, std::string("cannot write: ") + ErrnoReason(errno));
   const bool written = WriteAll(fd, text) && ::fsync(fd) == 0;
   int saved_errno = errno;
   const bool closed = ::close(fd) == 0;
   if (written && !closed) saved_errno = errno;
   if (!written || !closed) {
     std::remove(temporary.c_str());
-    ThrowFileError(path, std::string("write failed (") + std::strerror(saved_errno) + ")");
+    ThrowFileError(path, std::string("write failed (") + ErrnoReason(saved_errno) + ")");
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     const int rename_errno = errno;
     std::remove(temporary.c_str());
-    ThrowFileError(path, std::string("cannot replace the file: ") + std::strerror(rename_errno));
+    ThrowFileError(path, std::string("cannot replace the file: ") + ErrnoReason(rename_errno));
   }
 }
 

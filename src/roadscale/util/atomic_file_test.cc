@@ -68,7 +68,7 @@ TEST(AtomicFile, AFailedWriteLeavesThePreviousFileWholeAndNoTemporaryFile) {
 TEST(AtomicFile, AMissingFolderIsNamed) {
   TempDir dir;
   EXPECT_EQ(ErrorOf([&] { WriteFileAtomically(dir.File("no/a.txt"), "x"); }),
-            dir.File("no/a.txt") + ": cannot write: No such file or directory");
+            dir.File("no/a.txt") + ": cannot write: no such file or directory");
 }
 
 }  // namespace

@@ -17,6 +17,10 @@ class Error : public std::runtime_error {
 [[noreturn]] void ThrowFileError(const std::string& path, int line, const std::string& message);
 [[noreturn]] void ThrowFileError(const std::string& path, const std::string& message);
 
+// The system's reason for an errno value in the style of the other messages, lower case:
+// "permission denied", "no such file or directory".
+std::string ErrnoReason(int error_number);
+
 // Throws Error("invalid option NAME: MESSAGE") unless the condition holds. Used by the
 // Check() method of every options struct.
 void CheckOption(bool condition, const char* name, const std::string& message);

@@ -1,7 +1,6 @@
 #include "roadscale/util/folder_lock.h"
 
 #include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -16,7 +15,7 @@
 namespace roadscale {
 namespace {
 
-std::string ErrnoText() { return std::strerror(errno); }
+std::string ErrnoText() { return ErrnoReason(errno); }
 
 std::string HostName() {
   char name[256] = {};

@@ -1,6 +1,5 @@
 #include "roadscale/util/input_file.h"
 
-#include <cctype>
 #include <cerrno>
 #include <filesystem>
 #include <system_error>
@@ -14,13 +13,6 @@ namespace roadscale {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The system's reason in the style of the other messages: "permission denied".
-std::string Reason(int error_number) {
-  std::string text = std::generic_category().message(error_number);
-  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  return text;
-}
 
 [[noreturn]] void ThrowCannotOpen(const std::string& path, const std::string& what,
                                   const std::string& reason) {
@@ -48,10 +40,10 @@ int OpenOrThrow(const std::string& path, const std::string& what) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (status.type() == fs::file_type::not_found) ThrowCannotOpen(path, what, "no such file");
-  if (error) ThrowCannotOpen(path, what, Reason(error.value()));
+  if (error) ThrowCannotOpen(path, what, ErrnoReason(error.value()));
   if (status.type() == fs::file_type::directory) ThrowCannotOpen(path, what, "is a directory");
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) ThrowCannotOpen(path, what, Reason(errno));
+  if (fd < 0) ThrowCannotOpen(path, what, ErrnoReason(errno));
   return fd;
 }
 
@@ -70,7 +62,7 @@ std::string ReadInputFile(const std::string& path, const std::string& what) {
     if (count == 0) break;
     if (count < 0) {
       if (errno == EINTR) continue;
-      ThrowFileError(path, "cannot read " + what + ": " + Reason(errno));
+      ThrowFileError(path, "cannot read " + what + ": " + ErrnoReason(errno));
     }
     contents.append(buffer, static_cast<size_t>(count));
     if (contents.size() > kMaxInputFileBytes) {
