@@ -365,6 +365,9 @@ sys.stdout.buffer.write(b'\x89PNG\r\n\x1a\n'+c(b'IHDR',struct.pack('>IIBBBBB',w,
   expect_error 1 "invalid option --max-time-diff: must be a non-negative number of seconds" \
     "$roadscale" rescale --trajectory "$out/five.txt" --kitti "$seq" --max-time-diff -1 \
     --no-segmentation --out "$out/r"
+  expect_error 1 "invalid option --span-steps: must be >= 1" \
+    "$roadscale" rescale --trajectory "$out/five.txt" --kitti "$seq" --span-steps 0 \
+    --no-segmentation --out "$out/r"
   awk 'NR == 3 { $1 = $2 = $3 = 0 } { print }' "$out/five.txt" >"$out/degenerate.txt"
   expect_error 1 "degenerate\.txt:3: the 3x3 part is not a rotation" \
     "$roadscale" rescale --trajectory "$out/degenerate.txt" --kitti "$seq" --no-segmentation \
